@@ -1,0 +1,10 @@
+# Compiler settings shared by every tabletop target, as one interface target.
+#
+# -ffp-contract=off keeps the compiler from fusing a*b+c into one FMA in some
+# places and not others, so results do not depend on optimisation choices.
+add_library(tabletop_options INTERFACE)
+add_library(Tabletop::options ALIAS tabletop_options)
+target_compile_features(tabletop_options INTERFACE cxx_std_17)
+target_compile_options(tabletop_options INTERFACE
+  $<$<CXX_COMPILER_ID:GNU,Clang>:-Wall -Wextra -Wpedantic -Wshadow -ffp-contract=off>
+  $<$<AND:$<BOOL:${TABLETOP_WERROR}>,$<CXX_COMPILER_ID:GNU,Clang>>:-Werror>)

@@ -1,0 +1,22 @@
+# tabletop_test(NAME SOURCES ... [LIBS ...] [LABELS ...]): one GoogleTest
+# executable whose cases CTest discovers one by one.
+find_package(GTest REQUIRED)
+include(GoogleTest)
+
+function(tabletop_test name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;LIBS;LABELS" ${ARGN})
+  add_executable(${name} ${ARG_SOURCES})
+  target_link_libraries(${name} PRIVATE ${ARG_LIBS} GTest::gtest_main Tabletop::options)
+  target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR}/tests)
+  target_compile_definitions(${name} PRIVATE
+    TABLETOP_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+    TABLETOP_BINARY_DIR="${PROJECT_BINARY_DIR}")
+  set(_labels unit)
+  if(ARG_LABELS)
+    set(_labels ${ARG_LABELS})
+  endif()
+  gtest_discover_tests(${name}
+    WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
+    PROPERTIES LABELS "${_labels}"
+    DISCOVERY_TIMEOUT 60)
+endfunction()

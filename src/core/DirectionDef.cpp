@@ -1,0 +1,42 @@
+#include "core/DirectionDef.h"
+
+#include <cmath>
+
+#include "core/Angle.h"
+
+namespace tabletop {
+
+std::string_view toString(DirectionDef d) {
+  switch (d) {
+    case DirectionDef::Left: return "Left";
+    case DirectionDef::Right: return "Right";
+    case DirectionDef::Front: return "Front";
+    case DirectionDef::Back: return "Back";
+  }
+  return "Left";
+}
+
+std::optional<DirectionDef> directionFromString(std::string_view name) {
+  for (DirectionDef d : {DirectionDef::Left, DirectionDef::Right, DirectionDef::Front, DirectionDef::Back}) {
+    if (toString(d) == name) return d;
+  }
+  return std::nullopt;
+}
+
+double directionAngleDegrees(DirectionDef d) {
+  switch (d) {
+    case DirectionDef::Left: return 0.0;     // force from -X: moves to +X
+    case DirectionDef::Right: return 180.0;  // force from +X: moves to -X
+    case DirectionDef::Front: return 90.0;   // force from +Z: moves to -Z
+    case DirectionDef::Back: return 270.0;   // force from -Z: moves to +Z
+  }
+  return 0.0;
+}
+
+// Report 3.8: the step's X component is +cos, its Z component -sin.
+Vec3 pushDirection(double angleDegrees) {
+  const double a = convertAngle(angleDegrees);
+  return {std::cos(a), 0.0, -std::sin(a)};
+}
+
+}  // namespace tabletop

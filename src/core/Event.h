@@ -1,0 +1,38 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace tabletop {
+
+/// What can happen to entities during a run.
+enum class EventType {
+  Push,          ///< an impulse was applied (entity)
+  Rotate,        ///< an entity was turned about its vertical axis (entity)
+  ContactBegin,  ///< two entities started touching (entity, other)
+  LeavesTable,   ///< an entity's centre passed a table edge (entity, edge)
+  Lands,         ///< an entity came to rest on a new support (entity, on)
+  AtRest,        ///< an entity stopped moving (entity)
+};
+
+/// The output name of an event type ("push", "contact_begin", ...).
+const char* toString(EventType t);
+
+/// One timed event. Fields that do not apply to the type stay empty / NaN.
+struct Event {
+  double t = 0.0;  ///< simulated time, seconds
+  EventType type = EventType::Push;
+  std::string entity;
+  std::string other;      ///< ContactBegin: the second entity
+  std::string edge;       ///< LeavesTable: "Left", "Right", "Front", "Back"
+  std::string on;         ///< Lands: "table", "ground" or an entity name
+  std::string direction;  ///< Push: a DirectionDef name, or empty for an angle
+  double angle = 0.0;     ///< Push: world angle (report 3.8); Rotate: degrees turned
+  double impulse = 0.0;   ///< Push: N*s
+  double step = 0.0;      ///< Push: metres, when the push was given as a step
+};
+
+/// The entities an event names, in order.
+std::vector<std::string> eventEntities(const Event& e);
+
+}  // namespace tabletop

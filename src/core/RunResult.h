@@ -1,0 +1,28 @@
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/EntityState.h"
+#include "core/Event.h"
+#include "core/Settings.h"
+
+namespace tabletop {
+
+/// The outcome of running one scenario in one mode: what `tabletop run`
+/// prints, as text or JSON.
+struct RunResult {
+  std::string scenario;  ///< the scenario's name
+  std::string file;      ///< where it was read from
+  std::string mode;      ///< "bullet", ...
+  Settings settings;
+  double simTime = 0.0;  ///< seconds simulated
+  long steps = 0;
+  double wallSeconds = 0.0;
+  std::vector<EntityState> entities;
+  std::vector<Event> events;
+  std::uint64_t stateHash = 0;
+};
+
+}  // namespace tabletop

@@ -1,0 +1,22 @@
+#include "core/ShapeKind.h"
+
+namespace tabletop {
+
+std::string_view toString(ShapeKind k) {
+  switch (k) {
+    case ShapeKind::Cube: return "cube";
+    case ShapeKind::Sphere: return "sphere";
+    case ShapeKind::SolidBox: return "box";
+    case ShapeKind::Cylinder: return "cylinder";
+  }
+  return "cube";
+}
+
+std::optional<ShapeKind> shapeKindFromString(std::string_view name) {
+  for (auto k : {ShapeKind::Cube, ShapeKind::Sphere, ShapeKind::SolidBox, ShapeKind::Cylinder}) {
+    if (toString(k) == name) return k;
+  }
+  return std::nullopt;
+}
+
+}  // namespace tabletop

@@ -1,0 +1,39 @@
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/Arrow.h"
+#include "core/EntityState.h"
+#include "core/Event.h"
+
+namespace tabletop {
+
+/// One scene in one mode (bullet, compat or rules). The script runner, the
+/// viewer and the benchmarks drive every mode through this interface.
+class Simulation {
+ public:
+  virtual ~Simulation() = default;
+
+  /// The mode's name as printed ("bullet", ...).
+  virtual std::string_view modeName() const = 0;
+  /// Applies a push now. Throws std::invalid_argument if the mode cannot.
+  virtual void push(const Arrow& arrow, const PushMagnitude& magnitude) = 0;
+  /// Turns an entity about its own vertical axis by `degrees` (report 4).
+  virtual void rotate(const std::string& entity, double degrees) = 0;
+  /// Advances one fixed timestep.
+  virtual void step() = 0;
+  /// Simulated seconds so far.
+  virtual double time() const = 0;
+  /// Steps taken so far.
+  virtual long steps() const = 0;
+  /// True when no entity moves.
+  virtual bool allAtRest() const = 0;
+  /// Every entity's state, in scenario order.
+  virtual std::vector<EntityState> snapshot() const = 0;
+  /// Everything that happened so far, in time order.
+  virtual const std::vector<Event>& events() const = 0;
+};
+
+}  // namespace tabletop

@@ -1,0 +1,46 @@
+#include "physics/SolidBox.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "physics/CollisionMargin.h"
+
+namespace tabletop {
+namespace {
+
+// btBoxShape keeps its outer size: the margin is taken from inside the half
+// extents, so the box is exact for box-box and box-plane contacts.
+std::unique_ptr<btCollisionShape> makeBox(const btVector3& half, double margin) {
+  auto box = std::make_unique<btBoxShape>(half);
+  box->setMargin(margin);
+  return box;
+}
+
+}  // namespace
+
+SolidBox::SolidBox(std::string name, double width, double height, double depth)
+    : Shape(std::move(name),
+            makeBox(btVector3(width, height, depth) * 0.5,
+                    collisionMargin(0.5 * std::min({width, height, depth})))),
+      half_(btVector3(width, height, depth) * 0.5) {}
+
+double SolidBox::volume() const { return 8.0 * half_.x() * half_.y() * half_.z(); }
+
+btVector3 SolidBox::localInertia(double mass) const {
+  const double a2 = 4.0 * half_.x() * half_.x();
+  const double b2 = 4.0 * half_.y() * half_.y();
+  const double c2 = 4.0 * half_.z() * half_.z();
+  return btVector3(mass * (b2 + c2) / 12.0, mass * (a2 + c2) / 12.0, mass * (a2 + b2) / 12.0);
+}
+
+// A ray from the centre along a horizontal direction leaves the box through
+// the first face it meets.
+double SolidBox::surfaceDistance(const btVector3& direction) const {
+  double t = std::numeric_limits<double>::infinity();
+  if (std::abs(direction.x()) > 1e-12) t = std::min(t, half_.x() / std::abs(direction.x()));
+  if (std::abs(direction.z()) > 1e-12) t = std::min(t, half_.z() / std::abs(direction.z()));
+  return std::isfinite(t) ? t : 0.0;
+}
+
+}  // namespace tabletop

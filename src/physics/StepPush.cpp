@@ -1,0 +1,53 @@
+#include "physics/StepPush.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "physics/Sphere.h"
+
+namespace tabletop {
+
+double slidingDistance(double v0, double mu, double gravity) {
+  return v0 * v0 / (2.0 * mu * gravity);
+}
+
+double rollingDistance(double v0, double mu, double rf, double radius, double gravity) {
+  const double rho = rf / radius;
+  const double t1 = 2.0 * v0 / (gravity * (7.0 * mu - 5.0 * rho));
+  const double v1 = 5.0 * v0 * (mu - rho) / (7.0 * mu - 5.0 * rho);
+  const double rollDeceleration = 5.0 * gravity * rho / 7.0;
+  return 0.5 * (v0 + v1) * t1 + v1 * v1 / (2.0 * rollDeceleration);
+}
+
+double stepLaunchSpeed(const Shape& shape, double step, const Material& contact, double gravity,
+                       double timestep) {
+  const double mu = contact.friction;
+  if (!(mu > 0.0)) {
+    throw std::invalid_argument("entity '" + shape.name() +
+                                "' has no friction with the table, so a push by step never stops");
+  }
+  double unitDistance = slidingDistance(1.0, mu, gravity);
+  double firstDeceleration = mu * gravity;
+  if (shape.kind() == ShapeKind::Sphere) {
+    const double r = static_cast<const Sphere&>(shape).radius();
+    const double rf = contact.rollingFriction;
+    if (!(rf > 0.0) || !(rf < mu * r)) {
+      throw std::invalid_argument(
+          "sphere '" + shape.name() +
+          "' needs rolling friction between 0 and friction * radius for a push by step (got " +
+          std::to_string(rf) + " m)");
+    }
+    unitDistance = rollingDistance(1.0, mu, rf, r, gravity);
+    // The slip ends at v1 = c1 v0 whatever the step (angular momentum about
+    // the contact point), so the half-step offset belongs to the rolling
+    // phase, which carries almost all of the distance: v1 is raised by
+    // a_roll dt / 2, that is v0 by a_roll dt / (2 c1).
+    const double rho = rf / r;
+    const double c1 = 5.0 * (mu - rho) / (7.0 * mu - 5.0 * rho);
+    firstDeceleration = 5.0 * gravity * rho / 7.0 / c1;
+  }
+  return std::sqrt(step / unitDistance) + 0.5 * firstDeceleration * timestep;
+}
+
+}  // namespace tabletop

@@ -1,0 +1,44 @@
+#pragma once
+
+#include "core/Material.h"
+
+namespace tabletop {
+
+class Shape;
+
+/// Distance a body slides after being launched at `v0` m/s on a surface with
+/// Coulomb friction `mu`: d = v0^2 / (2 mu g).
+double slidingDistance(double v0, double mu, double gravity);
+
+/// Distance a solid sphere of `radius` travels after a push through its
+/// centre launches it at `v0` without spin, on a contact with friction `mu`
+/// and rolling friction `rf` (a lever arm in metres, as Bullet's):
+///  - it first slips: v falls at mu g while the friction and the rolling
+///    resistance spin it up, dw/dt = 5 g (mu r - rf) / (2 r^2), until
+///    v = w r at t1 = 2 v0 / (g (7 mu - 5 rf / r)), with
+///    v1 = 5 v0 (mu - rf / r) / (7 mu - 5 rf / r) (5/7 v0 when rf = 0);
+///  - it then rolls, decelerating at a = 5 g rf / (7 r) (energy: the
+///    rolling kinetic energy 7/10 m v^2 is lost at the rate rf m g v / r).
+/// d = (v0 + v1) t1 / 2 + v1^2 / (2 a).
+double rollingDistance(double v0, double mu, double rf, double radius, double gravity);
+
+/// The speed a push must give `shape` (a cube or box slides, a sphere slips
+/// then rolls, a cylinder slides on its base), alone on a surface whose
+/// contact coefficients with it are `contact`, to travel `step` metres and
+/// stop. Both distances above grow as v0^2, so v0 = sqrt(step / d(1)).
+///
+/// Bullet integrates positions with the velocity at the end of each step
+/// (semi-implicit Euler): that is the leapfrog scheme, exact for constant
+/// accelerations, once velocities are read as belonging to mid-steps. A
+/// push at time t therefore sets the velocity of t + dt/2, and the launch
+/// speed is raised by a dt / 2, where a = mu g is the sliding deceleration;
+/// without it a step falls short by v0 dt / 2. A sphere's slip ends at
+/// v1 = c1 v0 whatever the integrator, so its offset is the rolling phase's,
+/// a_roll dt / (2 c1).
+///
+/// Throws std::invalid_argument when no finite step can be reached
+/// (no friction; a sphere without rolling friction, or with rf >= mu r).
+double stepLaunchSpeed(const Shape& shape, double step, const Material& contact, double gravity,
+                       double timestep);
+
+}  // namespace tabletop

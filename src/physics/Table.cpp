@@ -1,0 +1,54 @@
+#include "physics/Table.h"
+
+namespace tabletop {
+
+Table::Table(const TableSpec& spec) : spec_(spec) {
+  const double legHeight = spec.height - spec.thickness;
+  top_ = std::make_unique<SolidBox>("table top", spec.width, spec.thickness, spec.depth);
+  for (auto& leg : legs_) {
+    leg = std::make_unique<Cylinder>("table leg", spec.legRadius, spec.legRadius, legHeight);
+  }
+
+  // The compound's frame sits on the ground under the table's centre; the
+  // children do not own their shapes (the SolidBox and Cylinders do).
+  compound_ = std::make_unique<btCompoundShape>(false, 5);
+  btTransform local;
+  local.setIdentity();
+  local.setOrigin(btVector3(0, spec.height - 0.5 * spec.thickness, 0));
+  compound_->addChildShape(local, &top_->collisionShape());
+  for (int i = 0; i < 4; ++i) {
+    local.setOrigin(legCentre(i) - btVector3(spec.centreX, 0, spec.centreZ));
+    compound_->addChildShape(local, &legs_[i]->collisionShape());
+  }
+
+  btTransform pose;
+  pose.setIdentity();
+  pose.setOrigin(btVector3(spec.centreX, 0, spec.centreZ));
+  btRigidBody::btRigidBodyConstructionInfo info(0.0, nullptr, compound_.get());
+  info.m_startWorldTransform = pose;
+  info.m_friction = spec.material.friction;
+  info.m_rollingFriction = spec.material.rollingFriction;
+  info.m_restitution = spec.material.restitution;
+  body_ = std::make_unique<btRigidBody>(info);
+}
+
+Table::~Table() = default;
+
+btVector3 Table::legCentre(int i) const {
+  // Legs stand one leg diameter in from each corner.
+  const double inset = 2.0 * spec_.legRadius;
+  const double x = (i % 2 == 0 ? -1.0 : 1.0) * (0.5 * spec_.width - inset);
+  const double z = (i < 2 ? -1.0 : 1.0) * (0.5 * spec_.depth - inset);
+  return btVector3(spec_.centreX + x, 0.5 * (spec_.height - spec_.thickness), spec_.centreZ + z);
+}
+
+// Report 3.4: the entity leaves the table once its centre passes an edge.
+EntityPositionStatus Table::statusAt(double x, double z) const {
+  if (x > xRight()) return EntityPositionStatus::DropFromRightEdge;
+  if (x < xLeft()) return EntityPositionStatus::DropFromLeftEdge;
+  if (z > zFront()) return EntityPositionStatus::DropFromFrontEdge;
+  if (z < zBack()) return EntityPositionStatus::DropFromBackEdge;
+  return EntityPositionStatus::OnTable;
+}
+
+}  // namespace tabletop

@@ -1,0 +1,58 @@
+#pragma once
+
+#include <array>
+#include <memory>
+
+#include <btBulletDynamicsCommon.h>
+
+#include "core/EntityPositionStatus.h"
+#include "core/TableSpec.h"
+#include "physics/Cylinder.h"
+#include "physics/SolidBox.h"
+
+namespace tabletop {
+
+/// The report's Table: a static entity made of a SolidBox top on four
+/// Cylinder legs, as one static btRigidBody with a btCompoundShape. Its top
+/// edges are the report's critical boundary (report 3.4).
+class Table {
+ public:
+  explicit Table(const TableSpec& spec);
+  ~Table();
+  Table(const Table&) = delete;
+  Table& operator=(const Table&) = delete;
+
+  const TableSpec& spec() const { return spec_; }
+  /// X_L, the left edge (smallest X), metres.
+  double xLeft() const { return spec_.centreX - 0.5 * spec_.width; }
+  /// X_R, the right edge.
+  double xRight() const { return spec_.centreX + 0.5 * spec_.width; }
+  /// Z_B, the back edge (smallest Z).
+  double zBack() const { return spec_.centreZ - 0.5 * spec_.depth; }
+  /// Z_F, the front edge (largest Z; the report's Z_T).
+  double zFront() const { return spec_.centreZ + 0.5 * spec_.depth; }
+  /// Height of the top surface above the ground.
+  double topHeight() const { return spec_.height; }
+
+  /// The report's drop test (3.4) for a centre at (x, z): OnTable inside the
+  /// edges (inclusive), else DropFrom...Edge for the first edge passed in
+  /// the report's order X_R, X_L, Z_F, Z_B.
+  EntityPositionStatus statusAt(double x, double z) const;
+
+  const SolidBox& top() const { return *top_; }
+  const std::array<std::unique_ptr<Cylinder>, 4>& legs() const { return legs_; }
+  /// Centre of each leg in world space (same order as legs()).
+  btVector3 legCentre(int i) const;
+
+  btRigidBody& body() { return *body_; }
+  const btRigidBody& body() const { return *body_; }
+
+ private:
+  TableSpec spec_;
+  std::unique_ptr<SolidBox> top_;
+  std::array<std::unique_ptr<Cylinder>, 4> legs_;
+  std::unique_ptr<btCompoundShape> compound_;
+  std::unique_ptr<btRigidBody> body_;
+};
+
+}  // namespace tabletop

@@ -1,0 +1,321 @@
+#include "physics/World.h"
+
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+#include "core/Angle.h"
+#include "physics/ContactMaterial.h"
+#include "physics/StepPush.h"
+
+namespace tabletop {
+namespace {
+
+// Body user indices: entities use their index; these mark the rest.
+constexpr int kTableIndex = -2;
+constexpr int kGroundIndex = -3;
+
+// Contact points farther apart than this (metres) are not touching.
+constexpr double kTouchDistance = 1e-4;
+// A contact supports an entity when its normal points up within 60 degrees.
+constexpr double kSupportNormalY = 0.5;
+// An entity is at rest once slower than these for kRestWindow seconds.
+constexpr double kRestSpeed = 5e-3;   // m/s
+constexpr double kRestSpin = 5e-2;    // rad/s
+constexpr double kRestWindow = 0.1;   // s
+
+btVector3 toBullet(const Vec3& v) { return btVector3(v.x, v.y, v.z); }
+Vec3 toVec3(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
+
+btQuaternion yawRotation(double degrees) {
+  return btQuaternion(btVector3(0, 1, 0), convertAngle(degrees));
+}
+
+}  // namespace
+
+World::World(const Settings& settings, const TableSpec& table)
+    : settings_(settings),
+      configuration_(std::make_unique<btDefaultCollisionConfiguration>()),
+      dispatcher_(std::make_unique<btCollisionDispatcher>(configuration_.get())),
+      broadphase_(std::make_unique<btDbvtBroadphase>()),
+      solver_(std::make_unique<btSequentialImpulseConstraintSolver>()),
+      world_(std::make_unique<DynamicsWorld>(dispatcher_.get(), broadphase_.get(),
+                                                       solver_.get(), configuration_.get())),
+      table_(table) {
+  world_->setGravity(btVector3(0, -settings.gravity, 0));
+  world_->getSolverInfo().m_numIterations = settings.iterations;
+  // Sorted pairs make the solver's order independent of memory layout.
+  world_->getDispatchInfo().m_deterministicOverlappingPairs = true;
+
+  table_.body().setUserIndex(kTableIndex);
+  ground_.body().setUserIndex(kGroundIndex);
+  world_->addRigidBody(&table_.body());
+  world_->addRigidBody(&ground_.body());
+}
+
+World::~World() {
+  for (auto& e : entities_) world_->removeRigidBody(e->body());
+  world_->removeRigidBody(&ground_.body());
+  world_->removeRigidBody(&table_.body());
+}
+
+Shape& World::addEntity(std::unique_ptr<Shape> shape, double mass, const Material& material,
+                        const btVector3& centre, double yawDegrees) {
+  btTransform pose(yawRotation(yawDegrees), centre);
+  shape->createBody(mass, material, pose);
+  btRigidBody* body = shape->body();
+  body->setUserIndex(static_cast<int>(entities_.size()));
+  if (!settings_.sleeping) body->setActivationState(DISABLE_DEACTIVATION);
+  world_->addRigidBody(body);
+  entities_.push_back(std::move(shape));
+  trackers_.emplace_back();
+  return *entities_.back();
+}
+
+Shape* World::find(std::string_view name) {
+  for (auto& e : entities_) {
+    if (e->name() == name) return e.get();
+  }
+  return nullptr;
+}
+
+Shape& World::entity(const std::string& name) {
+  Shape* s = find(name);
+  if (!s) throw std::invalid_argument("no entity named '" + name + "'");
+  return *s;
+}
+
+std::string World::participantName(const btCollisionObject* object) const {
+  const int i = object->getUserIndex();
+  if (i == kTableIndex) return "table";
+  if (i == kGroundIndex) return "ground";
+  return entities_.at(static_cast<std::size_t>(i))->name();
+}
+
+std::vector<std::pair<std::string, std::string>> World::overlaps(double tolerance) {
+  world_->performDiscreteCollisionDetection();
+  std::vector<std::pair<std::string, std::string>> found;
+  for (int m = 0; m < dispatcher_->getNumManifolds(); ++m) {
+    const btPersistentManifold* manifold = dispatcher_->getManifoldByIndexInternal(m);
+    for (int p = 0; p < manifold->getNumContacts(); ++p) {
+      if (manifold->getContactPoint(p).getDistance() < -tolerance) {
+        found.emplace_back(participantName(manifold->getBody0()),
+                           participantName(manifold->getBody1()));
+        break;
+      }
+    }
+  }
+  return found;
+}
+
+double World::pushImpulse(const Arrow& arrow, const PushMagnitude& magnitude) {
+  Shape& shape = entity(arrow.entity);
+  if (magnitude.kind == PushMagnitude::Kind::Impulse) return magnitude.value;
+  const Material contact = combine(shape.material(), table_.spec().material);
+  return shape.mass() *
+         stepLaunchSpeed(shape, magnitude.value, contact, settings_.gravity, settings_.timestep);
+}
+
+// Report 3.5: a cube is pushed at the centre of a face, perpendicular to it;
+// a sphere through its centre. Both lines of action pass through the centre
+// of mass, so a push turns nothing.
+void World::push(const Arrow& arrow, const PushMagnitude& magnitude) {
+  start();
+  Shape& shape = entity(arrow.entity);
+  const double impulse = pushImpulse(arrow, magnitude);
+  const double angle = arrow.worldAngleDegrees(shape.hasFaces() ? shape.yawDegrees() : 0.0);
+  const btVector3 direction = toBullet(pushDirection(angle));
+
+  btRigidBody* body = shape.body();
+  const btVector3 local = body->getWorldTransform().getBasis().transpose() * direction;
+  const btVector3 arm = -direction * shape.surfaceDistance(local);
+  body->activate(true);
+  body->applyImpulse(direction * impulse, arm);
+
+  const auto i = static_cast<std::size_t>(body->getUserIndex());
+  trackers_[i].atRest = false;
+  trackers_[i].quietSince = -1.0;
+
+  Event e;
+  e.t = time_;
+  e.type = EventType::Push;
+  e.entity = shape.name();
+  if (arrow.face) e.direction = std::string(toString(*arrow.face));
+  e.angle = angle;
+  e.impulse = impulse;
+  if (magnitude.kind == PushMagnitude::Kind::Step) e.step = magnitude.value;
+  events_.push_back(e);
+}
+
+// The report's "Entities on the table" rotation: a turn about the entity's
+// own vertical axis through its centre.
+void World::rotate(const std::string& name, double degrees) {
+  start();
+  Shape& shape = entity(name);
+  btRigidBody* body = shape.body();
+  btTransform pose = body->getWorldTransform();
+  pose.setRotation(yawRotation(degrees) * pose.getRotation());
+  body->setWorldTransform(pose);
+  body->setInterpolationWorldTransform(pose);
+  body->activate(true);
+
+  Event e;
+  e.t = time_;
+  e.type = EventType::Rotate;
+  e.entity = name;
+  e.angle = degrees;
+  events_.push_back(e);
+}
+
+void World::start() {
+  if (started_) return;
+  started_ = true;
+  world_->performDiscreteCollisionDetection();
+  observe(false);
+}
+
+void World::step() {
+  start();
+  // maxSubSteps = 0: exactly one step of the given length, no interpolation.
+  world_->stepSimulation(settings_.timestep, 0);
+  ++steps_;
+  time_ = static_cast<double>(steps_) * settings_.timestep;
+  observe(true);
+}
+
+bool World::allAtRest() const {
+  for (const Tracker& t : trackers_) {
+    if (!t.atRest) return false;
+  }
+  return true;
+}
+
+// Reads the contact manifolds and every entity's motion after a step, and
+// records what changed. With `record` false (the initial state) it only
+// sets the state.
+void World::observe(bool record) {
+  const std::size_t n = entities_.size();
+
+  // Contacts: which entity pairs touch, and what pushes each entity up.
+  std::set<std::pair<int, int>> touching;
+  std::vector<std::map<std::string, double>> supportImpulse(n);
+  for (int m = 0; m < dispatcher_->getNumManifolds(); ++m) {
+    const btPersistentManifold* manifold = dispatcher_->getManifoldByIndexInternal(m);
+    const int a = manifold->getBody0()->getUserIndex();
+    const int b = manifold->getBody1()->getUserIndex();
+    for (int p = 0; p < manifold->getNumContacts(); ++p) {
+      const btManifoldPoint& point = manifold->getContactPoint(p);
+      if (point.getDistance() > kTouchDistance) continue;
+      if (a >= 0 && b >= 0) touching.emplace(std::min(a, b), std::max(a, b));
+      // The normal on B points from B towards A.
+      const double up = point.m_normalWorldOnB.y();
+      const double impulse = point.getAppliedImpulse();
+      if (a >= 0 && up > kSupportNormalY) {
+        supportImpulse[a][participantName(manifold->getBody1())] += impulse;
+      }
+      if (b >= 0 && -up > kSupportNormalY) {
+        supportImpulse[b][participantName(manifold->getBody0())] += impulse;
+      }
+    }
+  }
+
+  if (record) {
+    for (const auto& pair : touching) {
+      if (touching_.count(pair)) continue;
+      Event e;
+      e.t = time_;
+      e.type = EventType::ContactBegin;
+      e.entity = entities_[pair.first]->name();
+      e.other = entities_[pair.second]->name();
+      events_.push_back(e);
+    }
+  }
+  touching_ = std::move(touching);
+
+  for (std::size_t i = 0; i < n; ++i) {
+    Shape& shape = *entities_[i];
+    Tracker& tracker = trackers_[i];
+
+    // Support: the body pushing up hardest (ties: the first by name).
+    std::string support = "none";
+    double best = -1.0;
+    for (const auto& [name, impulse] : supportImpulse[i]) {
+      if (impulse > best) {
+        best = impulse;
+        support = name;
+      }
+    }
+    shape.setSupport(support);
+    if (support != "none") {
+      if (record && !tracker.lastSupport.empty() && support != tracker.lastSupport) {
+        Event e;
+        e.t = time_;
+        e.type = EventType::Lands;
+        e.entity = shape.name();
+        e.on = support;
+        events_.push_back(e);
+      }
+      tracker.lastSupport = support;
+    }
+
+    // Report 3.4: the centre passing an edge starts the drop.
+    if (shape.checkBoundary(table_) && record) {
+      Event e;
+      e.t = time_;
+      e.type = EventType::LeavesTable;
+      e.entity = shape.name();
+      e.edge = std::string(edgeName(shape.status()));
+      events_.push_back(e);
+    }
+
+    // Rest: slow for a whole window; the event carries the window's start.
+    const btRigidBody* body = shape.body();
+    const bool slow = body->getLinearVelocity().length() < kRestSpeed &&
+                      body->getAngularVelocity().length() < kRestSpin;
+    if (!slow) {
+      tracker.quietSince = -1.0;
+      tracker.atRest = false;
+    } else if (!record) {
+      tracker.atRest = true;
+    } else {
+      if (tracker.quietSince < 0.0) tracker.quietSince = time_;
+      if (!tracker.atRest && time_ - tracker.quietSince >= kRestWindow - 1e-12) {
+        tracker.atRest = true;
+        Event e;
+        e.t = tracker.quietSince;
+        e.type = EventType::AtRest;
+        e.entity = shape.name();
+        events_.push_back(e);
+      }
+    }
+
+    // The drop ends once the entity is at rest below the table top.
+    if (isDropping(shape.status()) && tracker.atRest &&
+        shape.position().y() < table_.topHeight()) {
+      shape.finishDrop();
+    }
+  }
+}
+
+std::vector<EntityState> World::snapshot() const {
+  std::vector<EntityState> states;
+  states.reserve(entities_.size());
+  for (const auto& e : entities_) {
+    const btRigidBody* body = e->body();
+    const btQuaternion q = body->getWorldTransform().getRotation();
+    EntityState s;
+    s.name = e->name();
+    s.shape = e->kind();
+    s.position = toVec3(body->getWorldTransform().getOrigin());
+    s.orientation = {q.w(), q.x(), q.y(), q.z()};
+    s.yawDegrees = e->yawDegrees();
+    s.linearVelocity = toVec3(body->getLinearVelocity());
+    s.angularVelocity = toVec3(body->getAngularVelocity());
+    s.status = e->status();
+    s.support = e->support();
+    states.push_back(s);
+  }
+  return states;
+}
+
+}  // namespace tabletop

@@ -1,0 +1,99 @@
+#pragma once
+
+#include <memory>
+#include <set>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <btBulletDynamicsCommon.h>
+
+#include "core/Settings.h"
+#include "core/Simulation.h"
+#include "core/TableSpec.h"
+#include "physics/DynamicsWorld.h"
+#include "physics/Ground.h"
+#include "physics/Shape.h"
+#include "physics/Table.h"
+
+namespace tabletop {
+
+/// A scene in full Bullet physics (mode "bullet"): owns the Bullet pipeline,
+/// the Table, the Ground and the entities, and steps them at a fixed rate.
+///
+/// After every step it updates each entity's report status (3.4), its
+/// support, and whether it is at rest, and records the events: contacts
+/// beginning between entities, an entity leaving the table, landing on a
+/// new support, coming to rest.
+///
+/// Deterministic: one thread, no interpolation, no randomised solver order,
+/// sorted overlapping pairs; the same scene and settings give bit-identical
+/// states.
+class World : public Simulation {
+ public:
+  World(const Settings& settings, const TableSpec& table);
+  ~World() override;
+  World(const World&) = delete;
+  World& operator=(const World&) = delete;
+
+  /// Adds an entity of `mass` kg with its centre at `centre`, turned by
+  /// `yawDegrees` about +Y. Entities keep the order they were added in.
+  Shape& addEntity(std::unique_ptr<Shape> shape, double mass, const Material& material,
+                   const btVector3& centre, double yawDegrees);
+
+  const Settings& settings() const { return settings_; }
+  const Table& table() const { return table_; }
+  const std::vector<std::unique_ptr<Shape>>& entities() const { return entities_; }
+  /// The entity called `name`, or null.
+  Shape* find(std::string_view name);
+
+  /// Pairs of bodies ("table" for the table) that interpenetrate by more
+  /// than `tolerance` metres in the current state.
+  std::vector<std::pair<std::string, std::string>> overlaps(double tolerance);
+
+  /// The impulse (N*s, along the arrow) a push of `magnitude` gives.
+  double pushImpulse(const Arrow& arrow, const PushMagnitude& magnitude);
+
+  // Simulation
+  std::string_view modeName() const override { return "bullet"; }
+  void push(const Arrow& arrow, const PushMagnitude& magnitude) override;
+  void rotate(const std::string& entity, double degrees) override;
+  void step() override;
+  double time() const override { return time_; }
+  long steps() const override { return steps_; }
+  bool allAtRest() const override;
+  std::vector<EntityState> snapshot() const override;
+  const std::vector<Event>& events() const override { return events_; }
+
+ private:
+  // Per-entity bookkeeping that is not the report's.
+  struct Tracker {
+    std::string lastSupport;  // the last support that was not "none"
+    double quietSince = -1.0;  // when the entity last became slow, or -1
+    bool atRest = true;
+  };
+
+  Shape& entity(const std::string& name);
+  void start();
+  void observe(bool record);
+  std::string participantName(const btCollisionObject* object) const;
+
+  Settings settings_;
+  std::unique_ptr<btDefaultCollisionConfiguration> configuration_;
+  std::unique_ptr<btCollisionDispatcher> dispatcher_;
+  std::unique_ptr<btBroadphaseInterface> broadphase_;
+  std::unique_ptr<btSequentialImpulseConstraintSolver> solver_;
+  std::unique_ptr<DynamicsWorld> world_;
+  Table table_;
+  Ground ground_;
+  std::vector<std::unique_ptr<Shape>> entities_;
+  std::vector<Tracker> trackers_;
+  std::set<std::pair<int, int>> touching_;
+  std::vector<Event> events_;
+  double time_ = 0.0;
+  long steps_ = 0;
+  bool started_ = false;
+};
+
+}  // namespace tabletop
