@@ -1,5 +1,10 @@
 #include "physics/DynamicsWorld.h"
 
+#include <algorithm>
+
+#include "core/Material.h"
+#include "physics/ContactMaterial.h"
+
 namespace tabletop {
 namespace {
 
@@ -22,6 +27,87 @@ void keepDeepestPoint(btPersistentManifold& manifold) {
 }
 
 }  // namespace
+
+void DynamicsWorld::applyGravity() {
+  btDiscreteDynamicsWorld::applyGravity();
+  applyRollingResistance();
+}
+
+namespace {
+
+// The largest angular impulse about `axis` through `contact` that does not
+// reverse a body turning at `rate` about it: (I + m d^2) rate, with d the
+// distance from the centre of mass to the axis (0 about the normal).
+double stoppingImpulse(const btRigidBody& body, const btVector3& contact, const btVector3& axis,
+                       double rate, bool aboutContact) {
+  const btVector3 inv = body.getInvInertiaDiagLocal();
+  const btMatrix3x3& basis = body.getWorldTransform().getBasis();
+  const btVector3 local = basis.transpose() * axis;
+  const double invI = inv.x() * local.x() * local.x() + inv.y() * local.y() * local.y() +
+                      inv.z() * local.z() * local.z();
+  double effective = invI > 0 ? 1.0 / invI : 0.0;
+  if (aboutContact) {
+    const btVector3 arm = contact - body.getCenterOfMassPosition();
+    effective += (arm - axis * axis.dot(arm)).length2() / body.getInvMass();
+  }
+  return effective * rate;
+}
+
+}  // namespace
+
+// For each touching manifold of the last step: the normal impulse N dt, and
+// the relative spin split into its rolling part (across the normal) and
+// its spinning part (about the normal); each is resisted by an angular
+// impulse x N dt, x the combined rolling or spinning friction, clamped so
+// that it at most stops the motion.
+void DynamicsWorld::applyRollingResistance() {
+  btDispatcher* dispatcher = getDispatcher();
+  for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
+    btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
+    auto* a = const_cast<btRigidBody*>(btRigidBody::upcast(manifold->getBody0()));
+    auto* b = const_cast<btRigidBody*>(btRigidBody::upcast(manifold->getBody1()));
+    const auto* ma = static_cast<const Material*>(a ? a->getUserPointer() : nullptr);
+    const auto* mb = static_cast<const Material*>(b ? b->getUserPointer() : nullptr);
+    if (!ma || !mb) continue;
+    const Material contact = combine(*ma, *mb);
+    if (contact.rollingFriction <= 0 && contact.spinningFriction <= 0) continue;
+
+    double normalImpulse = 0;
+    btVector3 normal(0, 0, 0), point(0, 0, 0);
+    for (int p = 0; p < manifold->getNumContacts(); ++p) {
+      const btManifoldPoint& cp = manifold->getContactPoint(p);
+      if (cp.getAppliedImpulse() <= 0) continue;
+      normalImpulse += cp.getAppliedImpulse();
+      normal = cp.m_normalWorldOnB;
+      point = cp.getPositionWorldOnB();
+    }
+    if (normalImpulse <= 0) continue;
+
+    const btVector3 spin = a->getAngularVelocity() - b->getAngularVelocity();
+    const btVector3 spinning = normal * normal.dot(spin);
+    const struct {
+      btVector3 part;
+      double coefficient;
+      bool aboutContact;
+    } parts[] = {{spin - spinning, contact.rollingFriction, true},
+                 {spinning, contact.spinningFriction, false}};
+    for (const auto& part : parts) {
+      const btScalar rate = part.part.length();
+      if (part.coefficient <= 0 || rate < SIMD_EPSILON) continue;
+      const btVector3 axis = part.part / rate;
+      double impulse = part.coefficient * normalImpulse;
+      for (const btRigidBody* body : {a, b}) {
+        if (body->getInvMass() == 0) continue;
+        impulse = std::min(impulse, stoppingImpulse(*body, point, axis, rate, part.aboutContact));
+      }
+      // As an angular impulse now, not a torque: Bullet's friction rows
+      // read angular velocities without the step's external torque and add
+      // it after the solve, which left a steady slip of tau dt r / I.
+      if (a->getInvMass() != 0) a->applyTorqueImpulse(-axis * impulse);
+      if (b->getInvMass() != 0) b->applyTorqueImpulse(axis * impulse);
+    }
+  }
+}
 
 void DynamicsWorld::solveConstraints(btContactSolverInfo& solverInfo) {
   btDispatcher* dispatcher = getDispatcher();

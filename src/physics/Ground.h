@@ -17,8 +17,10 @@ class Ground {
   Ground& operator=(const Ground&) = delete;
 
   btRigidBody& body() { return *body_; }
+  const Material& material() const { return material_; }
 
  private:
+  Material material_;
   std::unique_ptr<btStaticPlaneShape> plane_;
   std::unique_ptr<btRigidBody> body_;
 };

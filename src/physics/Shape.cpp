@@ -21,7 +21,8 @@ void Shape::createBody(double mass, const Material& material, const btTransform&
                                                 localInertia(mass));
   info.m_startWorldTransform = pose;
   info.m_friction = material.friction;
-  info.m_rollingFriction = material.rollingFriction;
+  info.m_rollingFriction = 0;  // rolling and spinning friction:
+  info.m_spinningFriction = 0;  // applied by DynamicsWorld
   info.m_restitution = material.restitution;
   body_ = std::make_unique<btRigidBody>(info);
 }

@@ -27,27 +27,18 @@ double stepLaunchSpeed(const Shape& shape, double step, const Material& contact,
     throw std::invalid_argument("entity '" + shape.name() +
                                 "' has no friction with the table, so a push by step never stops");
   }
-  double unitDistance = slidingDistance(1.0, mu, gravity);
-  double firstDeceleration = mu * gravity;
-  if (shape.kind() == ShapeKind::Sphere) {
-    const double r = static_cast<const Sphere&>(shape).radius();
-    const double rf = contact.rollingFriction;
-    if (!(rf > 0.0) || !(rf < mu * r)) {
-      throw std::invalid_argument(
-          "sphere '" + shape.name() +
-          "' needs rolling friction between 0 and friction * radius for a push by step (got " +
-          std::to_string(rf) + " m)");
-    }
-    unitDistance = rollingDistance(1.0, mu, rf, r, gravity);
-    // The slip ends at v1 = c1 v0 whatever the step (angular momentum about
-    // the contact point), so the half-step offset belongs to the rolling
-    // phase, which carries almost all of the distance: v1 is raised by
-    // a_roll dt / 2, that is v0 by a_roll dt / (2 c1).
-    const double rho = rf / r;
-    const double c1 = 5.0 * (mu - rho) / (7.0 * mu - 5.0 * rho);
-    firstDeceleration = 5.0 * gravity * rho / 7.0 / c1;
+  if (shape.kind() != ShapeKind::Sphere) {
+    return std::sqrt(step / slidingDistance(1.0, mu, gravity)) + 0.5 * mu * gravity * timestep;
   }
-  return std::sqrt(step / unitDistance) + 0.5 * firstDeceleration * timestep;
+  const double r = static_cast<const Sphere&>(shape).radius();
+  const double rf = contact.rollingFriction;
+  if (!(rf > 0.0) || !(rf < mu * r)) {
+    throw std::invalid_argument(
+        "sphere '" + shape.name() +
+        "' needs rolling friction between 0 and friction * radius for a push by step (got " +
+        std::to_string(rf) + " m)");
+  }
+  return std::sqrt(step / rollingDistance(1.0, mu, rf, r, gravity));
 }
 
 }  // namespace tabletop

@@ -30,11 +30,13 @@ double rollingDistance(double v0, double mu, double rf, double radius, double gr
 /// Bullet integrates positions with the velocity at the end of each step
 /// (semi-implicit Euler): that is the leapfrog scheme, exact for constant
 /// accelerations, once velocities are read as belonging to mid-steps. A
-/// push at time t therefore sets the velocity of t + dt/2, and the launch
-/// speed is raised by a dt / 2, where a = mu g is the sliding deceleration;
-/// without it a step falls short by v0 dt / 2. A sphere's slip ends at
-/// v1 = c1 v0 whatever the integrator, so its offset is the rolling phase's,
-/// a_roll dt / (2 c1).
+/// push at time t therefore sets the velocity of t + dt/2, and a sliding
+/// body's launch speed is raised by mu g dt / 2; without it a step falls
+/// short by v0 dt / 2 (5% of a 0.2 m step at mu = 0.4 and 60 Hz).
+/// A sphere takes no offset: measured, the plain closed form lands within
+/// +0.95% at 60 Hz and +0.22% at 240 Hz, while either half-step offset
+/// (of the slip or of the rolling phase) overshoots (+12%, +2.9% at 60 Hz).
+/// What remains is first order in dt and comes from the slip phase.
 ///
 /// Throws std::invalid_argument when no finite step can be reached
 /// (no friction; a sphere without rolling friction, or with rf >= mu r).

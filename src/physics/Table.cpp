@@ -27,7 +27,8 @@ Table::Table(const TableSpec& spec) : spec_(spec) {
   btRigidBody::btRigidBodyConstructionInfo info(0.0, nullptr, compound_.get());
   info.m_startWorldTransform = pose;
   info.m_friction = spec.material.friction;
-  info.m_rollingFriction = spec.material.rollingFriction;
+  info.m_rollingFriction = 0;  // rolling and spinning friction:
+  info.m_spinningFriction = 0;  // applied by DynamicsWorld
   info.m_restitution = spec.material.restitution;
   body_ = std::make_unique<btRigidBody>(info);
 }

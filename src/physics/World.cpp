@@ -1,5 +1,6 @@
 #include "physics/World.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <stdexcept>
@@ -15,8 +16,11 @@ namespace {
 constexpr int kTableIndex = -2;
 constexpr int kGroundIndex = -3;
 
-// Contact points farther apart than this (metres) are not touching.
-constexpr double kTouchDistance = 1e-4;
+// Two entities start touching when a contact point comes within
+// kTouchDistance, and part only once every point is beyond kApartDistance,
+// so two cubes sliding together do not flicker in and out of contact.
+constexpr double kTouchDistance = 1e-4;  // m
+constexpr double kApartDistance = 1e-3;  // m
 // A contact supports an entity when its normal points up within 60 degrees.
 constexpr double kSupportNormalY = 0.5;
 // An entity is at rest once slower than these for kRestWindow seconds.
@@ -42,11 +46,22 @@ World::World(const Settings& settings, const TableSpec& table)
       world_(std::make_unique<DynamicsWorld>(dispatcher_.get(), broadphase_.get(),
                                                        solver_.get(), configuration_.get())),
       table_(table) {
+  // A box resting on the ground plane gets all its corner contacts in the
+  // first step, not one more per step (which let it sink for a step).
+  configuration_->setPlaneConvexMultipointIterations();
   world_->setGravity(btVector3(0, -settings.gravity, 0));
-  world_->getSolverInfo().m_numIterations = settings.iterations;
+  btContactSolverInfo& solver = world_->getSolverInfo();
+  solver.m_numIterations = settings.iterations;
+  // Split impulse for every penetration, not only those deeper than 4 cm:
+  // pushing bodies apart then never leaves velocity behind, so a body
+  // resting on the table does not bounce off it at the first step.
+  solver.m_splitImpulse = 1;
+  solver.m_splitImpulsePenetrationThreshold = 0;
   // Sorted pairs make the solver's order independent of memory layout.
   world_->getDispatchInfo().m_deterministicOverlappingPairs = true;
 
+  table_.body().setUserPointer(const_cast<Material*>(&table_.spec().material));
+  ground_.body().setUserPointer(const_cast<Material*>(&ground_.material()));
   table_.body().setUserIndex(kTableIndex);
   ground_.body().setUserIndex(kGroundIndex);
   world_->addRigidBody(&table_.body());
@@ -65,6 +80,7 @@ Shape& World::addEntity(std::unique_ptr<Shape> shape, double mass, const Materia
   shape->createBody(mass, material, pose);
   btRigidBody* body = shape->body();
   body->setUserIndex(static_cast<int>(entities_.size()));
+  body->setUserPointer(const_cast<Material*>(&shape->material()));
   if (!settings_.sleeping) body->setActivationState(DISABLE_DEACTIVATION);
   world_->addRigidBody(body);
   entities_.push_back(std::move(shape));
@@ -144,7 +160,7 @@ void World::push(const Arrow& arrow, const PushMagnitude& magnitude) {
   e.angle = angle;
   e.impulse = impulse;
   if (magnitude.kind == PushMagnitude::Kind::Step) e.step = magnitude.value;
-  events_.push_back(e);
+  record(e);
 }
 
 // The report's "Entities on the table" rotation: a turn about the entity's
@@ -164,7 +180,15 @@ void World::rotate(const std::string& name, double degrees) {
   e.type = EventType::Rotate;
   e.entity = name;
   e.angle = degrees;
-  events_.push_back(e);
+  record(e);
+}
+
+// Events are kept in time order; an at-rest event carries the earlier time
+// its quiet window began.
+void World::record(const Event& e) {
+  auto at = std::upper_bound(events_.begin(), events_.end(), e.t,
+                             [](double t, const Event& other) { return t < other.t; });
+  events_.insert(at, e);
 }
 
 void World::start() {
@@ -191,13 +215,13 @@ bool World::allAtRest() const {
 }
 
 // Reads the contact manifolds and every entity's motion after a step, and
-// records what changed. With `record` false (the initial state) it only
-// sets the state.
-void World::observe(bool record) {
+// records what changed. With `emit` false (the initial state) it only sets
+// the state.
+void World::observe(bool emit) {
   const std::size_t n = entities_.size();
 
-  // Contacts: which entity pairs touch, and what pushes each entity up.
-  std::set<std::pair<int, int>> touching;
+  // Contacts: how close each entity pair is, and what pushes each up.
+  std::map<std::pair<int, int>, double> gap;
   std::vector<std::map<std::string, double>> supportImpulse(n);
   for (int m = 0; m < dispatcher_->getNumManifolds(); ++m) {
     const btPersistentManifold* manifold = dispatcher_->getManifoldByIndexInternal(m);
@@ -205,8 +229,12 @@ void World::observe(bool record) {
     const int b = manifold->getBody1()->getUserIndex();
     for (int p = 0; p < manifold->getNumContacts(); ++p) {
       const btManifoldPoint& point = manifold->getContactPoint(p);
+      if (a >= 0 && b >= 0) {
+        const auto pair = std::make_pair(std::min(a, b), std::max(a, b));
+        auto [it, added] = gap.emplace(pair, point.getDistance());
+        if (!added) it->second = std::min(it->second, double(point.getDistance()));
+      }
       if (point.getDistance() > kTouchDistance) continue;
-      if (a >= 0 && b >= 0) touching.emplace(std::min(a, b), std::max(a, b));
       // The normal on B points from B towards A.
       const double up = point.m_normalWorldOnB.y();
       const double impulse = point.getAppliedImpulse();
@@ -219,15 +247,19 @@ void World::observe(bool record) {
     }
   }
 
-  if (record) {
-    for (const auto& pair : touching) {
-      if (touching_.count(pair)) continue;
-      Event e;
-      e.t = time_;
-      e.type = EventType::ContactBegin;
-      e.entity = entities_[pair.first]->name();
-      e.other = entities_[pair.second]->name();
-      events_.push_back(e);
+  std::set<std::pair<int, int>> touching;
+  for (const auto& [pair, distance] : gap) {
+    const bool was = touching_.count(pair) > 0;
+    if (distance <= kTouchDistance || (was && distance <= kApartDistance)) {
+      touching.insert(pair);
+      if (emit && !was) {
+        Event e;
+        e.t = time_;
+        e.type = EventType::ContactBegin;
+        e.entity = entities_[pair.first]->name();
+        e.other = entities_[pair.second]->name();
+        record(e);
+      }
     }
   }
   touching_ = std::move(touching);
@@ -247,25 +279,25 @@ void World::observe(bool record) {
     }
     shape.setSupport(support);
     if (support != "none") {
-      if (record && !tracker.lastSupport.empty() && support != tracker.lastSupport) {
+      if (emit && !tracker.lastSupport.empty() && support != tracker.lastSupport) {
         Event e;
         e.t = time_;
         e.type = EventType::Lands;
         e.entity = shape.name();
         e.on = support;
-        events_.push_back(e);
+        record(e);
       }
       tracker.lastSupport = support;
     }
 
     // Report 3.4: the centre passing an edge starts the drop.
-    if (shape.checkBoundary(table_) && record) {
+    if (shape.checkBoundary(table_) && emit) {
       Event e;
       e.t = time_;
       e.type = EventType::LeavesTable;
       e.entity = shape.name();
       e.edge = std::string(edgeName(shape.status()));
-      events_.push_back(e);
+      record(e);
     }
 
     // Rest: slow for a whole window; the event carries the window's start.
@@ -275,7 +307,7 @@ void World::observe(bool record) {
     if (!slow) {
       tracker.quietSince = -1.0;
       tracker.atRest = false;
-    } else if (!record) {
+    } else if (!emit) {
       tracker.atRest = true;
     } else {
       if (tracker.quietSince < 0.0) tracker.quietSince = time_;
@@ -285,7 +317,7 @@ void World::observe(bool record) {
         e.t = tracker.quietSince;
         e.type = EventType::AtRest;
         e.entity = shape.name();
-        events_.push_back(e);
+        record(e);
       }
     }
 

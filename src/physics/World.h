@@ -76,7 +76,8 @@ class World : public Simulation {
 
   Shape& entity(const std::string& name);
   void start();
-  void observe(bool record);
+  void observe(bool emit);
+  void record(const Event& e);
   std::string participantName(const btCollisionObject* object) const;
 
   Settings settings_;

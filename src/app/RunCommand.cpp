@@ -1,0 +1,71 @@
+#include "app/RunCommand.h"
+
+#include <exception>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "physics/World.h"
+#include "scenario/ScenarioError.h"
+#include "scenario/ScenarioLoader.h"
+#include "sim/ResultFormat.h"
+#include "sim/SceneBuilder.h"
+#include "sim/ScriptRunner.h"
+
+namespace tabletop {
+
+void addRunOptions(CLI::App& command, RunOptions& options) {
+  command.add_flag("--json", options.json, "Print the outcome as JSON instead of text");
+  command.add_option("--timestep", options.timestep, "Fixed timestep in seconds (overrides the scenario)")
+      ->check(CLI::PositiveNumber);
+  command.add_option("--iterations", options.iterations, "Solver iterations per step (overrides the scenario)")
+      ->check(CLI::Range(1, 10000));
+  command.add_option("--duration", options.duration, "Longest simulated time in seconds (overrides the scenario)")
+      ->check(CLI::PositiveNumber);
+}
+
+int runScenarios(const RunOptions& options, std::ostream& out, std::ostream& err) {
+  std::vector<RunResult> results;
+  bool failed = false;
+  for (const ScenarioSource& source : options.scenarios) {
+    try {
+      const Scenario scenario = source.text ? ScenarioLoader::loadText(*source.text, source.name)
+                                            : ScenarioLoader::loadFile(source.name);
+      Settings settings = scenario.settings;
+      if (options.timestep) settings.timestep = *options.timestep;
+      if (options.iterations) settings.iterations = *options.iterations;
+      if (options.duration) settings.duration = *options.duration;
+      std::unique_ptr<World> world = buildWorld(scenario, settings);
+      results.push_back(runScript(scenario, settings, *world));
+    } catch (const ScenarioError& e) {
+      for (const std::string& line : e.lines()) err << line << "\n";
+      failed = true;
+    }
+  }
+  if (failed) return kExitBadInput;
+
+  if (options.json) {
+    if (results.size() == 1) {
+      out << toJson(results.front()).dump(2) << "\n";
+    } else {
+      nlohmann::json all = nlohmann::json::array();
+      for (const RunResult& r : results) all.push_back(toJson(r));
+      out << all.dump(2) << "\n";
+    }
+  } else {
+    for (std::size_t i = 0; i < results.size(); ++i) out << (i ? "\n" : "") << formatText(results[i]);
+  }
+  return kExitOk;
+}
+
+int parseAndRun(CLI::App& app, int argc, char** argv, int& status) {
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? kExitOk : kExitBadInput;
+  }
+  return status;
+}
+
+}  // namespace tabletop

@@ -1,0 +1,48 @@
+#pragma once
+
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+}
+
+namespace tabletop {
+
+/// Exit statuses of every tabletop command.
+enum ExitStatus : int {
+  kExitOk = 0,
+  kExitFailure = 1,   ///< an unexpected failure inside tabletop
+  kExitBadInput = 2,  ///< a scenario or command line that cannot be run
+};
+
+/// A scenario to run: a file, or a text built into the executable.
+struct ScenarioSource {
+  std::string name;  ///< the path, or the built-in scenario's file name
+  std::optional<std::string> text;
+};
+
+/// What `tabletop run` was asked to do.
+struct RunOptions {
+  std::vector<ScenarioSource> scenarios;
+  bool json = false;
+  std::optional<double> timestep;
+  std::optional<int> iterations;
+  std::optional<double> duration;
+};
+
+/// Declares run's options (all but the scenario list) on `command`.
+void addRunOptions(CLI::App& command, RunOptions& options);
+
+/// Runs every scenario, then prints all outcomes to `out` (text, or JSON: an
+/// object for one scenario, an array for several). Problems go to `err`,
+/// one line each, and then nothing is printed to `out`.
+int runScenarios(const RunOptions& options, std::ostream& out, std::ostream& err);
+
+/// Parses `argv` with CLI11 and runs `command`'s callback; maps --help to
+/// 0 and usage errors to kExitBadInput.
+int parseAndRun(CLI::App& app, int argc, char** argv, int& status);
+
+}  // namespace tabletop

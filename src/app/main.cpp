@@ -1,0 +1,35 @@
+// tabletop: runs the report's scenes in Bullet from the command line.
+
+#include <exception>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "app/RunCommand.h"
+
+int main(int argc, char** argv) {
+  using namespace tabletop;
+  CLI::App app{
+      "tabletop: the table-top scenes of S. Zou's report \"The Design of a 3D-Object Simulator\n"
+      "Using Open-GL\" (Concordia, 2001) simulated with Bullet rigid-body physics."};
+  app.require_subcommand(1);
+  int status = kExitOk;
+
+  RunOptions run;
+  std::vector<std::string> files;
+  CLI::App* runCommand = app.add_subcommand(
+      "run", "Run scenario files headless and print each entity's final state and the events");
+  runCommand->add_option("SCENARIO", files, "Scenario files (JSON)")->required();
+  addRunOptions(*runCommand, run);
+  runCommand->callback([&] {
+    for (const std::string& f : files) run.scenarios.push_back({f, std::nullopt});
+    status = runScenarios(run, std::cout, std::cerr);
+  });
+
+  try {
+    return parseAndRun(app, argc, argv, status);
+  } catch (const std::exception& e) {
+    std::cerr << "tabletop: internal error: " << e.what() << "\n";
+    return kExitFailure;
+  }
+}

@@ -1,0 +1,59 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/Arrow.h"
+#include "core/Colour.h"
+#include "core/Material.h"
+#include "core/Settings.h"
+#include "core/ShapeKind.h"
+#include "core/TableSpec.h"
+#include "core/Vec3.h"
+
+namespace tabletop {
+
+/// One entity as a scenario file describes it. Sizes in metres: a cube's
+/// side, a sphere's radius, a box's width, height and depth, a cylinder's
+/// base radius, top radius and height.
+struct EntitySpec {
+  std::string name;
+  ShapeKind shape = ShapeKind::Cube;
+  std::vector<double> size;
+  Vec3 position;           ///< centre; y is filled in when `on` is set
+  std::string on;          ///< "table", "ground", an earlier entity, or empty
+  double yawDegrees = 0.0;
+  Colour colour;
+  double mass = 1.0;       ///< kg
+  Material material;
+  std::string path;        ///< JSON pointer of this entity in its file
+};
+
+/// One step of a scenario's script.
+struct Action {
+  enum class Type { Push, Rotate, WaitRest, WaitTime };
+  Type type = Type::Push;
+  std::optional<double> at;  ///< absolute start time, seconds
+  Arrow arrow;               ///< Push
+  PushMagnitude magnitude;   ///< Push
+  std::string entity;        ///< Rotate
+  double degrees = 0.0;      ///< Rotate
+  double seconds = 0.0;      ///< WaitTime: how long; WaitRest: the timeout (0: none)
+  std::string path;          ///< JSON pointer of this action in its file
+};
+
+/// A scene and its script, as read from a scenario file (see
+/// scenarios/README.md for the format).
+struct Scenario {
+  int version = 1;
+  std::string name;
+  std::string description;
+  std::string file;  ///< where it was read from
+  TableSpec table;
+  std::vector<EntitySpec> entities;
+  Settings settings;
+  std::vector<Action> script;
+};
+
+}  // namespace tabletop

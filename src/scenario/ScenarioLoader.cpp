@@ -1,0 +1,487 @@
+#include "scenario/ScenarioLoader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "core/DirectionDef.h"
+#include "scenario/JsonLocator.h"
+#include "scenario/ScenarioError.h"
+
+namespace tabletop {
+namespace {
+
+using nlohmann::json;
+
+constexpr int kVersion = 1;
+
+enum class Range { Finite, Positive, NonNegative, UnitInterval };
+
+const char* rangeText(Range r) {
+  switch (r) {
+    case Range::Finite: return "a finite number";
+    case Range::Positive: return "a positive number";
+    case Range::NonNegative: return "a non-negative number";
+    case Range::UnitInterval: return "a number from 0 to 1";
+  }
+  return "a number";
+}
+
+bool inRange(double v, Range r) {
+  if (!std::isfinite(v)) return false;
+  switch (r) {
+    case Range::Finite: return true;
+    case Range::Positive: return v > 0.0;
+    case Range::NonNegative: return v >= 0.0;
+    case Range::UnitInterval: return v >= 0.0 && v <= 1.0;
+  }
+  return false;
+}
+
+std::string shown(const json& j) {
+  std::string s = j.dump();
+  return s.size() > 40 ? s.substr(0, 37) + "..." : s;
+}
+
+// Reads one JSON object field by field, recording problems against JSON
+// pointers; finish() reports the keys nobody asked for.
+class Fields {
+ public:
+  Fields(const json& j, std::string path, std::vector<Problem>& problems)
+      : j_(j), path_(std::move(path)), problems_(problems) {
+    if (!j_.is_object()) fail(path_, "expected an object, got " + shown(j_));
+  }
+
+  bool valid() const { return j_.is_object(); }
+  std::string at(const std::string& key) const { return path_ + "/" + escapePointerToken(key); }
+  void fail(const std::string& path, const std::string& message) { problems_.push_back({path, message}); }
+
+  // The raw value of `key`, or null when absent (reported if required).
+  const json* get(const std::string& key, bool required) {
+    seen_.insert(key);
+    if (!valid()) return nullptr;
+    auto it = j_.find(key);
+    if (it == j_.end()) {
+      if (required) fail(path_, "missing required key '" + key + "'");
+      return nullptr;
+    }
+    return &*it;
+  }
+
+  bool has(const std::string& key) const { return valid() && j_.contains(key); }
+
+  double number(const std::string& key, Range range, double fallback, bool required = false) {
+    const json* v = get(key, required);
+    if (!v) return fallback;
+    return checkNumber(*v, at(key), range, fallback);
+  }
+
+  double checkNumber(const json& v, const std::string& path, Range range, double fallback) {
+    if (!v.is_number() || !inRange(v.get<double>(), range)) {
+      fail(path, std::string("expected ") + rangeText(range) + ", got " + shown(v));
+      return fallback;
+    }
+    return v.get<double>();
+  }
+
+  std::string string(const std::string& key, const std::string& fallback, bool required = false) {
+    const json* v = get(key, required);
+    if (!v) return fallback;
+    if (!v->is_string() || v->get<std::string>().empty()) {
+      fail(at(key), "expected a non-empty string, got " + shown(*v));
+      return fallback;
+    }
+    return v->get<std::string>();
+  }
+
+  bool boolean(const std::string& key, bool fallback) {
+    const json* v = get(key, false);
+    if (!v) return fallback;
+    if (!v->is_boolean()) {
+      fail(at(key), "expected true or false, got " + shown(*v));
+      return fallback;
+    }
+    return v->get<bool>();
+  }
+
+  // A fixed-length array of numbers; empty on error.
+  std::vector<double> numbers(const json& v, const std::string& path, std::size_t minCount,
+                              std::size_t maxCount, Range range) {
+    const std::string what = minCount == maxCount
+                                 ? "an array of " + std::to_string(minCount) + " numbers"
+                                 : "an array of " + std::to_string(minCount) + " to " +
+                                       std::to_string(maxCount) + " numbers";
+    if (!v.is_array() || v.size() < minCount || v.size() > maxCount) {
+      fail(path, "expected " + what + ", got " + shown(v));
+      return {};
+    }
+    std::vector<double> out;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      const std::size_t before = problems_.size();
+      const double x = checkNumber(v[i], path + "/" + std::to_string(i), range, 0.0);
+      if (problems_.size() != before) return {};
+      out.push_back(x);
+    }
+    return out;
+  }
+
+  void finish() {
+    if (!valid()) return;
+    for (auto it = j_.begin(); it != j_.end(); ++it) {
+      if (!seen_.count(it.key())) fail(at(it.key()), "unknown key '" + it.key() + "'");
+    }
+  }
+
+ private:
+  const json& j_;
+  std::string path_;
+  std::vector<Problem>& problems_;
+  std::set<std::string> seen_;
+};
+
+Material readMaterial(Fields& parent, const std::string& key, Material m,
+                      std::vector<Problem>& problems) {
+  const json* v = parent.get(key, false);
+  if (!v) return m;
+  Fields f(*v, parent.at(key), problems);
+  m.friction = f.number("friction", Range::NonNegative, m.friction);
+  m.rollingFriction = f.number("rolling_friction", Range::NonNegative, m.rollingFriction);
+  // A ball on a table stops spinning too: spinning friction follows rolling
+  // friction unless given.
+  m.spinningFriction = f.number("spinning_friction", Range::NonNegative,
+                                f.has("rolling_friction") ? m.rollingFriction : m.spinningFriction);
+  m.restitution = f.number("restitution", Range::UnitInterval, m.restitution);
+  f.finish();
+  return m;
+}
+
+Colour readColour(Fields& parent, const std::string& key, Colour c) {
+  const json* v = parent.get(key, false);
+  if (!v) return c;
+  const std::vector<double> rgb = parent.numbers(*v, parent.at(key), 3, 3, Range::NonNegative);
+  if (rgb.size() != 3) return c;
+  for (std::size_t i = 0; i < 3; ++i) {
+    if (rgb[i] > 255.0 || rgb[i] != std::floor(rgb[i])) {
+      parent.fail(parent.at(key) + "/" + std::to_string(i),
+                  "expected an integer from 0 to 255, got " + shown((*v)[i]));
+      return c;
+    }
+  }
+  return {static_cast<int>(rgb[0]), static_cast<int>(rgb[1]), static_cast<int>(rgb[2])};
+}
+
+TableSpec readTable(const json& j, std::vector<Problem>& problems) {
+  TableSpec t;
+  Fields f(j, "/table", problems);
+  if (const json* size = f.get("size", false)) {
+    const auto wd = f.numbers(*size, f.at("size"), 2, 2, Range::Positive);
+    if (wd.size() == 2) {
+      t.width = wd[0];
+      t.depth = wd[1];
+    }
+  }
+  t.height = f.number("height", Range::Positive, t.height);
+  t.thickness = f.number("thickness", Range::Positive, t.thickness);
+  t.legRadius = f.number("leg_radius", Range::Positive, t.legRadius);
+  if (const json* centre = f.get("centre", false)) {
+    const auto xz = f.numbers(*centre, f.at("centre"), 2, 2, Range::Finite);
+    if (xz.size() == 2) {
+      t.centreX = xz[0];
+      t.centreZ = xz[1];
+    }
+  }
+  t.material = readMaterial(f, "material", t.material, problems);
+  t.colour = readColour(f, "colour", t.colour);
+  f.finish();
+  if (f.valid() && t.thickness >= t.height) {
+    f.fail("/table/thickness", "expected less than the table height (" + std::to_string(t.height) + " m)");
+  }
+  if (f.valid() && 4.0 * t.legRadius >= std::min(t.width, t.depth)) {
+    f.fail("/table/leg_radius", "expected less than a quarter of the table's width and depth");
+  }
+  return t;
+}
+
+Settings readSettings(const json& j, std::vector<Problem>& problems) {
+  Settings s;
+  Fields f(j, "/settings", problems);
+  s.timestep = f.number("timestep", Range::Positive, s.timestep);
+  if (const json* it = f.get("iterations", false)) {
+    if (!it->is_number_integer() || it->get<long long>() < 1 || it->get<long long>() > 10000) {
+      f.fail(f.at("iterations"), "expected an integer from 1 to 10000, got " + shown(*it));
+    } else {
+      s.iterations = it->get<int>();
+    }
+  }
+  s.duration = f.number("duration", Range::Positive, s.duration);
+  s.gravity = f.number("gravity", Range::NonNegative, s.gravity);
+  s.endAtRest = f.boolean("end_at_rest", s.endAtRest);
+  s.sleeping = f.boolean("sleeping", s.sleeping);
+  f.finish();
+  return s;
+}
+
+// How many numbers each shape's "size" holds, and what they mean.
+std::size_t sizeCount(ShapeKind k) {
+  return (k == ShapeKind::Cube || k == ShapeKind::Sphere) ? 1 : 3;
+}
+
+EntitySpec readEntity(const json& j, const std::string& path, const std::vector<EntitySpec>& earlier,
+                      std::vector<Problem>& problems) {
+  EntitySpec e;
+  e.path = path;
+  Fields f(j, path, problems);
+  e.name = f.string("name", "", true);
+  for (const EntitySpec& other : earlier) {
+    if (!e.name.empty() && other.name == e.name) {
+      f.fail(f.at("name"), "expected a unique name, but '" + e.name + "' is already used");
+    }
+  }
+  if (e.name == "table" || e.name == "ground" || e.name == "none") {
+    f.fail(f.at("name"), "'" + e.name + "' is reserved; expected another name");
+  }
+
+  bool shapeKnown = false;
+  const std::string shape = f.string("shape", "", true);
+  if (!shape.empty()) {
+    if (auto k = shapeKindFromString(shape)) {
+      e.shape = *k;
+      shapeKnown = true;
+    } else {
+      f.fail(f.at("shape"), "expected one of cube, sphere, box, cylinder, got \"" + shape + "\"");
+    }
+  }
+
+  if (const json* size = f.get("size", true); size && shapeKnown) {
+    const std::size_t n = sizeCount(e.shape);
+    if (n == 1) {
+      const double s = f.checkNumber(*size, f.at("size"), Range::Positive, 0.0);
+      if (s > 0.0) e.size = {s};
+    } else {
+      e.size = f.numbers(*size, f.at("size"), 3, 3, Range::Positive);
+    }
+  }
+
+  e.on = f.has("on") ? f.string("on", "") : "";
+  if (const json* pos = f.get("position", true)) {
+    const auto p = f.numbers(*pos, f.at("position"), 2, 3, Range::Finite);
+    if (p.size() == 3) {
+      e.position = {p[0], p[1], p[2]};
+      if (!e.on.empty()) f.fail(f.at("on"), "expected no 'on' when the position gives a height [x, y, z]");
+    } else if (p.size() == 2) {
+      e.position = {p[0], 0.0, p[1]};
+      if (e.on.empty()) e.on = "table";
+    }
+  }
+  if (!e.on.empty() && e.on != "table" && e.on != "ground") {
+    bool found = false;
+    for (const EntitySpec& other : earlier) found = found || other.name == e.on;
+    if (!found) {
+      f.fail(f.at("on"), "expected \"table\", \"ground\" or an entity listed before this one, got \"" +
+                             e.on + "\"");
+    }
+  }
+
+  e.yawDegrees = f.number("yaw", Range::Finite, 0.0);
+  e.colour = readColour(f, "colour", e.colour);
+  e.mass = f.number("mass", Range::Positive, e.mass, true);
+  e.material = readMaterial(f, "material", e.material, problems);
+  f.finish();
+  return e;
+}
+
+Action readAction(const json& j, const std::string& path, const std::vector<EntitySpec>& entities,
+                  std::vector<Problem>& problems) {
+  Action a;
+  a.path = path;
+  Fields f(j, path, problems);
+  if (f.has("t")) a.at = f.number("t", Range::NonNegative, 0.0);
+
+  auto checkEntity = [&](Fields& g, const std::string& name) {
+    if (name.empty()) return;
+    for (const EntitySpec& e : entities) {
+      if (e.name == name) return;
+    }
+    g.fail(g.at("entity"), "expected the name of an entity, got \"" + name + "\"");
+  };
+
+  const int kinds = int(f.has("push")) + int(f.has("rotate")) + int(f.has("wait"));
+  if (f.valid() && kinds != 1) {
+    f.fail(path, "expected exactly one of 'push', 'rotate', 'wait'");
+  }
+  if (const json* push = f.get("push", false)) {
+    a.type = Action::Type::Push;
+    Fields p(*push, f.at("push"), problems);
+    a.arrow.entity = p.string("entity", "", true);
+    checkEntity(p, a.arrow.entity);
+    const bool byFace = p.has("direction"), byAngle = p.has("angle");
+    if (p.valid() && byFace == byAngle) p.fail(f.at("push"), "expected exactly one of 'direction', 'angle'");
+    if (byFace) {
+      const std::string d = p.string("direction", "");
+      if (auto dir = directionFromString(d)) {
+        a.arrow.face = *dir;
+      } else if (!d.empty()) {
+        p.fail(p.at("direction"), "expected one of Left, Right, Front, Back, got \"" + d + "\"");
+      }
+    }
+    if (byAngle) a.arrow.angleDegrees = p.number("angle", Range::Finite, 0.0);
+    const bool byStep = p.has("step"), byImpulse = p.has("impulse");
+    if (p.valid() && byStep == byImpulse) p.fail(f.at("push"), "expected exactly one of 'step', 'impulse'");
+    if (byStep) a.magnitude = {PushMagnitude::Kind::Step, p.number("step", Range::Positive, 0.0)};
+    if (byImpulse) {
+      a.magnitude = {PushMagnitude::Kind::Impulse, p.number("impulse", Range::Positive, 0.0)};
+    }
+    p.finish();
+  }
+  if (const json* rotate = f.get("rotate", false)) {
+    a.type = Action::Type::Rotate;
+    Fields r(*rotate, f.at("rotate"), problems);
+    a.entity = r.string("entity", "", true);
+    checkEntity(r, a.entity);
+    a.degrees = r.number("angle", Range::Finite, 0.0, true);
+    r.finish();
+  }
+  if (const json* wait = f.get("wait", false)) {
+    if (wait->is_string() && wait->get<std::string>() == "rest") {
+      a.type = Action::Type::WaitRest;
+      a.seconds = f.number("timeout", Range::Positive, 0.0);
+    } else if (wait->is_number()) {
+      a.type = Action::Type::WaitTime;
+      a.seconds = f.checkNumber(*wait, f.at("wait"), Range::Positive, 0.0);
+    } else {
+      f.fail(f.at("wait"), "expected \"rest\" or a positive number of seconds, got " + shown(*wait));
+    }
+  }
+  f.finish();
+  return a;
+}
+
+Scenario read(const json& root, std::vector<Problem>& problems) {
+  Scenario s;
+  Fields f(root, "", problems);
+  if (!f.valid()) return s;
+
+  if (const json* v = f.get("version", true)) {
+    if (!v->is_number_integer() || v->get<long long>() != kVersion) {
+      f.fail("/version", "expected " + std::to_string(kVersion) + ", got " + shown(*v));
+    }
+  }
+  s.name = f.string("name", "", true);
+  s.description = f.has("description") ? f.string("description", "") : "";
+  if (const json* t = f.get("table", false)) s.table = readTable(*t, problems);
+  if (const json* st = f.get("settings", false)) s.settings = readSettings(*st, problems);
+
+  if (const json* list = f.get("entities", true)) {
+    if (!list->is_array() || list->empty()) {
+      f.fail("/entities", "expected a non-empty array of entities, got " + shown(*list));
+    } else {
+      for (std::size_t i = 0; i < list->size(); ++i) {
+        s.entities.push_back(readEntity((*list)[i], "/entities/" + std::to_string(i), s.entities, problems));
+      }
+    }
+  }
+
+  if (const json* list = f.get("script", false)) {
+    if (!list->is_array()) {
+      f.fail("/script", "expected an array of actions, got " + shown(*list));
+    } else {
+      double lastTime = 0.0;
+      for (std::size_t i = 0; i < list->size(); ++i) {
+        const std::string path = "/script/" + std::to_string(i);
+        s.script.push_back(readAction((*list)[i], path, s.entities, problems));
+        if (const auto& at = s.script.back().at) {
+          if (*at < lastTime) {
+            f.fail(path + "/t", "expected a time not before the previous action's (" +
+                                    std::to_string(lastTime) + " s), got " + std::to_string(*at));
+          }
+          if (*at > s.settings.duration) {
+            f.fail(path + "/t", "expected a time within the duration (" +
+                                    std::to_string(s.settings.duration) + " s), got " + std::to_string(*at));
+          }
+          lastTime = std::max(lastTime, *at);
+        }
+      }
+    }
+  }
+  f.finish();
+  return s;
+}
+
+// The 1-based line and column of a byte offset in `text`.
+void locate(Problem& p, const std::string& text, std::size_t offset) {
+  offset = std::min(offset, text.size());
+  const std::size_t lineStart = offset == 0 ? 0 : text.rfind('\n', offset - 1) + 1;
+  p.line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + offset, '\n'));
+  p.column = static_cast<int>(offset - lineStart) + 1;
+}
+
+// What follows nlohmann's "[json.exception.parse_error.101] parse error at
+// line 3, column 5: " (or its other exceptions' "[json.exception...] ").
+std::string reason(const std::string& what) {
+  const std::size_t colon = what.find(": ", what.find("parse error"));
+  if (what.find("parse error") != std::string::npos && colon != std::string::npos) {
+    return what.substr(colon + 2);
+  }
+  const std::size_t close = what.find("] ");
+  return close == std::string::npos ? what : what.substr(close + 2);
+}
+
+Problem parseProblem(const json::parse_error& e, const std::string& text) {
+  Problem p{"", "not valid JSON: " + reason(e.what())};
+  locate(p, text, e.byte == 0 ? 0 : e.byte - 1);
+  return p;
+}
+
+// Other parser failures (a number too large for a double) give no
+// position; the offending token, which the message quotes, is found instead.
+Problem valueProblem(const json::exception& e, const std::string& text) {
+  Problem p{"", "not valid JSON: " + reason(e.what())};
+  const std::size_t open = p.message.find('\'');
+  const std::size_t close = p.message.find('\'', open + 1);
+  if (close != std::string::npos) {
+    const std::size_t at = text.find(p.message.substr(open + 1, close - open - 1));
+    if (at != std::string::npos) locate(p, text, at);
+  }
+  return p;
+}
+
+}  // namespace
+
+Scenario ScenarioLoader::loadText(const std::string& text, const std::string& source) {
+  json root;
+  try {
+    root = json::parse(text, nullptr, true, /*ignore_comments=*/true);
+  } catch (const json::parse_error& e) {
+    throw ScenarioError(source, {parseProblem(e, text)});
+  } catch (const json::exception& e) {
+    throw ScenarioError(source, {valueProblem(e, text)});
+  }
+  std::vector<Problem> problems;
+  Scenario s = read(root, problems);
+  if (!problems.empty()) {
+    const JsonLocator locator(text);
+    for (Problem& p : problems) {
+      const auto where = locator.find(p.path);
+      p.line = where.line;
+      p.column = where.column;
+    }
+    throw ScenarioError(source, std::move(problems));
+  }
+  s.file = source;
+  return s;
+}
+
+Scenario ScenarioLoader::loadFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ScenarioError(path, {{"", "cannot open the file for reading"}});
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) throw ScenarioError(path, {{"", "cannot read the file"}});
+  return loadText(text.str(), path);
+}
+
+}  // namespace tabletop

@@ -1,0 +1,110 @@
+#include "sim/ResultFormat.h"
+
+#include <cstdio>
+#include <sstream>
+
+#include "core/StateHash.h"
+
+namespace tabletop {
+namespace {
+
+std::string fixed(double v, int digits) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.*f", digits, v);
+  return text;
+}
+
+std::string padded(const std::string& s, std::size_t width) {
+  return s.size() >= width ? s + " " : s + std::string(width - s.size(), ' ');
+}
+
+nlohmann::json eventJson(const Event& e) {
+  nlohmann::json j{{"t", e.t}, {"type", toString(e.type)}, {"entities", eventEntities(e)}};
+  switch (e.type) {
+    case EventType::Push:
+      if (!e.direction.empty()) j["direction"] = e.direction;
+      j["angle"] = e.angle;
+      j["impulse"] = e.impulse;
+      if (e.step > 0) j["step"] = e.step;
+      break;
+    case EventType::Rotate: j["angle"] = e.angle; break;
+    case EventType::LeavesTable: j["edge"] = e.edge; break;
+    case EventType::Lands: j["on"] = e.on; break;
+    default: break;
+  }
+  return j;
+}
+
+}  // namespace
+
+std::string describe(const Event& e) {
+  switch (e.type) {
+    case EventType::Push: {
+      std::string s = "push " + e.entity + " " +
+                      (e.direction.empty() ? "at " + fixed(e.angle, 1) + " deg" : e.direction);
+      if (e.step > 0) s += ", step " + fixed(e.step, 3) + " m";
+      return s + " (impulse " + fixed(e.impulse, 4) + " N s)";
+    }
+    case EventType::Rotate: return "rotate " + e.entity + " by " + fixed(e.angle, 1) + " deg";
+    case EventType::ContactBegin: return "contact begins between " + e.entity + " and " + e.other;
+    case EventType::LeavesTable: return e.entity + " leaves the table (" + e.edge + " edge)";
+    case EventType::Lands: return e.entity + " lands on " + e.on;
+    case EventType::AtRest: return e.entity + " comes to rest";
+  }
+  return "";
+}
+
+std::string formatText(const RunResult& r) {
+  std::ostringstream out;
+  out << r.scenario << "  (" << r.file << ")\n";
+  out << "  mode " << r.mode << ", timestep " << fixed(r.settings.timestep, 6) << " s, "
+      << r.settings.iterations << " iterations; simulated " << fixed(r.simTime, 3) << " s in "
+      << r.steps << " steps (" << fixed(r.wallSeconds, 3) << " s wall)\n";
+  out << "  " << padded("entity", 10) << padded("shape", 9) << padded("x [m]", 9) << padded("y [m]", 9)
+      << padded("z [m]", 9) << padded("yaw [deg]", 10) << padded("status", 22) << "support\n";
+  for (const EntityState& e : r.entities) {
+    out << "  " << padded(e.name, 10) << padded(std::string(toString(e.shape)), 9)
+        << padded(fixed(e.position.x, 4), 9) << padded(fixed(e.position.y, 4), 9)
+        << padded(fixed(e.position.z, 4), 9) << padded(fixed(e.yawDegrees, 1), 10)
+        << padded(std::string(toString(e.status)), 22) << e.support << "\n";
+  }
+  out << "  events\n";
+  for (const Event& e : r.events) out << "    " << padded(fixed(e.t, 3) + " s", 10) << describe(e) << "\n";
+  out << "  state_hash " << formatHash(r.stateHash) << "\n";
+  return out.str();
+}
+
+nlohmann::json toJson(const RunResult& r) {
+  nlohmann::json entities = nlohmann::json::array();
+  for (const EntityState& e : r.entities) {
+    entities.push_back({{"name", e.name},
+                        {"shape", toString(e.shape)},
+                        {"position", {e.position.x, e.position.y, e.position.z}},
+                        {"orientation", e.orientation},
+                        {"yaw", e.yawDegrees},
+                        {"linear_velocity", {e.linearVelocity.x, e.linearVelocity.y, e.linearVelocity.z}},
+                        {"angular_velocity", {e.angularVelocity.x, e.angularVelocity.y, e.angularVelocity.z}},
+                        {"status", toString(e.status)},
+                        {"support", e.support}});
+  }
+  nlohmann::json events = nlohmann::json::array();
+  for (const Event& e : r.events) events.push_back(eventJson(e));
+  return {{"scenario", r.scenario},
+          {"file", r.file},
+          {"mode", r.mode},
+          {"settings",
+           {{"timestep", r.settings.timestep},
+            {"iterations", r.settings.iterations},
+            {"duration", r.settings.duration},
+            {"gravity", r.settings.gravity},
+            {"end_at_rest", r.settings.endAtRest},
+            {"sleeping", r.settings.sleeping}}},
+          {"sim_time", r.simTime},
+          {"steps", r.steps},
+          {"wall_seconds", r.wallSeconds},
+          {"entities", entities},
+          {"events", events},
+          {"state_hash", formatHash(r.stateHash)}};
+}
+
+}  // namespace tabletop

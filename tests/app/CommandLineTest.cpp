@@ -1,0 +1,154 @@
+// The tabletop executable as a user runs it: output, errors, exit statuses.
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace {
+
+struct Outcome {
+  int status = -1;
+  std::string out;
+  std::string err;
+};
+
+const std::string kBin = std::string(TABLETOP_BINARY_DIR) + "/src/app/";
+const std::string kScenarios = std::string(TABLETOP_SOURCE_DIR) + "/scenarios/";
+
+// Runs a shell command, capturing stdout, and stderr through a file.
+Outcome run(const std::string& command) {
+  const std::string errFile = ::testing::TempDir() + "tabletop_stderr.txt";
+  Outcome o;
+  FILE* pipe = popen((command + " 2>" + errFile).c_str(), "r");
+  if (!pipe) return o;
+  std::array<char, 4096> buffer{};
+  std::size_t n;
+  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) o.out.append(buffer.data(), n);
+  const int raw = pclose(pipe);
+  o.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  std::ifstream in(errFile);
+  o.err.assign(std::istreambuf_iterator<char>(in), {});
+  return o;
+}
+
+std::string writeTemp(const std::string& name, const std::string& text) {
+  const std::string path = ::testing::TempDir() + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+int lineCount(const std::string& s) { return static_cast<int>(std::count(s.begin(), s.end(), '\n')); }
+
+// The issue's check: the JSON object, with the struck cube dropped and the
+// contact before the drop.
+TEST(CommandLine, RunJsonPrintsTheOutcomeObject) {
+  const Outcome o = run(kBin + "tabletop run " + kScenarios + "example2_two_cubes.json --json");
+  ASSERT_EQ(o.status, 0) << o.err;
+  const auto j = nlohmann::json::parse(o.out);
+  for (const char* key : {"scenario", "mode", "settings", "sim_time", "steps", "wall_seconds", "entities",
+                          "events", "state_hash"}) {
+    EXPECT_TRUE(j.contains(key)) << key;
+  }
+  EXPECT_EQ(j["mode"], "bullet");
+  EXPECT_EQ(j["state_hash"].get<std::string>().size(), 16u);
+  const auto& b = j["entities"][1];
+  EXPECT_EQ(b["name"], "B");
+  EXPECT_EQ(b["orientation"].size(), 4u);
+  EXPECT_EQ(b["position"].size(), 3u);
+  const std::string status = b["status"];
+  EXPECT_TRUE(status == "FinishDropSimulation" || status.rfind("DropFrom", 0) == 0) << status;
+  int contact = -1, drop = -1;
+  for (int i = 0; i < static_cast<int>(j["events"].size()); ++i) {
+    const auto& e = j["events"][i];
+    if (contact < 0 && e["type"] == "contact_begin") contact = i;
+    if (drop < 0 && e["type"] == "leaves_table" && e["entities"][0] == "B") drop = i;
+  }
+  EXPECT_GE(contact, 0);
+  EXPECT_GT(drop, contact);
+}
+
+// Overrides reach the run, and the text output lists entities and events.
+TEST(CommandLine, RunTextHonoursOverrides) {
+  const Outcome o = run(kBin + "tabletop run " + kScenarios +
+                        "example1_single_cube.json --timestep 0.002 --iterations 20 --duration 0.5");
+  ASSERT_EQ(o.status, 0) << o.err;
+  EXPECT_NE(o.out.find("timestep 0.002000 s, 20 iterations; simulated 0.500 s in 250 steps"), std::string::npos)
+      << o.out;
+  EXPECT_NE(o.out.find("push A Left"), std::string::npos);
+  EXPECT_NE(o.out.find("state_hash"), std::string::npos);
+}
+
+// Two processes, the same scenario and settings: the same hash.
+TEST(CommandLine, HashIsRepeatableAcrossProcesses) {
+  const std::string cmd = kBin + "tabletop run " + kScenarios + "example3_stacked_cubes.json --json";
+  const auto a = nlohmann::json::parse(run(cmd).out);
+  const auto b = nlohmann::json::parse(run(cmd).out);
+  EXPECT_EQ(a["state_hash"], b["state_hash"]);
+}
+
+// Each report example is its own executable with the same options.
+TEST(CommandLine, ExampleExecutablesRunTheirScenario) {
+  const Outcome o = run(kBin + "example4_two_spheres --json");
+  ASSERT_EQ(o.status, 0) << o.err;
+  const auto j = nlohmann::json::parse(o.out);
+  EXPECT_EQ(j["scenario"], "example4_two_spheres");
+  const auto file = nlohmann::json::parse(run(kBin + "tabletop run --json " + kScenarios +
+                                              "example4_two_spheres.json").out);
+  EXPECT_EQ(j["state_hash"], file["state_hash"]);
+}
+
+TEST(CommandLine, HelpExplainsItself) {
+  Outcome o = run(kBin + "tabletop --help");
+  EXPECT_EQ(o.status, 0);
+  EXPECT_NE(o.out.find("run"), std::string::npos);
+  o = run(kBin + "tabletop run --help");
+  EXPECT_EQ(o.status, 0);
+  EXPECT_NE(o.out.find("--timestep"), std::string::npos);
+}
+
+// Bad input: one line per problem naming file and place, exit status 2,
+// nothing on standard output.
+TEST(CommandLine, BadScenarioIsOneLineAndStatusTwo) {
+  const std::string path = writeTemp("bad_size.json", R"({"version": 1, "name": "t", "entities": [
+    {"name": "A", "shape": "cube", "size": -0.1, "position": [0, 0], "mass": 1}]})");
+  const Outcome o = run(kBin + "tabletop run " + path);
+  EXPECT_EQ(o.status, 2);
+  EXPECT_TRUE(o.out.empty()) << o.out;
+  EXPECT_EQ(lineCount(o.err), 1) << o.err;
+  EXPECT_NE(o.err.find(path + ":2:"), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("at /entities/0/size: expected a positive number, got -0.1"), std::string::npos) << o.err;
+}
+
+TEST(CommandLine, NotJsonIsOneLineAndStatusTwo) {
+  const std::string path = writeTemp("not_json.json", "{\n  \"version\": 1,\n  oops\n}");
+  const Outcome o = run(kBin + "tabletop run " + path);
+  EXPECT_EQ(o.status, 2);
+  EXPECT_EQ(lineCount(o.err), 1) << o.err;
+  EXPECT_NE(o.err.find(path + ":3:"), std::string::npos) << o.err;
+}
+
+TEST(CommandLine, OverlapAndMissingFileAndBadOptionsAreStatusTwo) {
+  const std::string overlap = writeTemp("overlap.json", R"({"version": 1, "name": "t", "entities": [
+    {"name": "A", "shape": "cube", "size": 0.1, "position": [0, 0], "mass": 1},
+    {"name": "B", "shape": "cube", "size": 0.1, "position": [0.05, 0], "mass": 1}]})");
+  Outcome o = run(kBin + "tabletop run " + overlap);
+  EXPECT_EQ(o.status, 2);
+  EXPECT_NE(o.err.find("at /entities/1/position: expected 'B' clear of other bodies"), std::string::npos) << o.err;
+  o = run(kBin + "tabletop run /no/such/scenario.json");
+  EXPECT_EQ(o.status, 2);
+  EXPECT_NE(o.err.find("cannot open"), std::string::npos) << o.err;
+  o = run(kBin + "tabletop run " + kScenarios + "example1_single_cube.json --timestep -1");
+  EXPECT_EQ(o.status, 2);
+  o = run(kBin + "tabletop fly");
+  EXPECT_EQ(o.status, 2);
+  o = run(kBin + "tabletop");
+  EXPECT_EQ(o.status, 2);
+}
+
+}  // namespace

@@ -1,0 +1,117 @@
+// Mass properties against closed forms and against Bullet's own formulas.
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "core/Angle.h"
+#include "physics/Cube.h"
+#include "physics/Cylinder.h"
+#include "physics/SolidBox.h"
+#include "physics/Sphere.h"
+
+namespace tabletop {
+namespace {
+
+// Relative tolerance for closed forms evaluated two ways: a few ulps.
+constexpr double kRel = 1e-12;
+
+void expectInertia(const btVector3& actual, double ix, double iy, double iz) {
+  EXPECT_NEAR(actual.x(), ix, kRel * ix);
+  EXPECT_NEAR(actual.y(), iy, kRel * iy);
+  EXPECT_NEAR(actual.z(), iz, kRel * iz);
+}
+
+btVector3 bulletInertia(btCollisionShape& shape, double mass) {
+  btVector3 i;
+  shape.calculateLocalInertia(mass, i);
+  return i;
+}
+
+// A cube's moment about any axis through its centre is m s^2 / 6.
+TEST(Cube, InertiaIsMassTimesSideSquaredOverSix) {
+  Cube cube("A", 0.1);
+  expectInertia(cube.localInertia(0.6), 0.001, 0.001, 0.001);  // 0.6 * 0.01 / 6
+  EXPECT_NEAR(cube.volume(), 1e-3, 1e-18);
+  const btVector3 b = bulletInertia(cube.collisionShape(), 0.6);
+  expectInertia(b, 0.001, 0.001, 0.001);
+}
+
+// A box w x h x d: I_x = m (h^2 + d^2) / 12, and so on.
+TEST(SolidBox, InertiaMatchesClosedFormAndBullet) {
+  SolidBox box("B", 0.3, 0.1, 0.2);
+  const double m = 1.2;
+  expectInertia(box.localInertia(m), m * (0.01 + 0.04) / 12, m * (0.09 + 0.04) / 12,
+                m * (0.09 + 0.01) / 12);
+  const btVector3 b = bulletInertia(box.collisionShape(), m);
+  expectInertia(box.localInertia(m), b.x(), b.y(), b.z());
+  EXPECT_NEAR(box.volume(), 0.006, 1e-15);
+}
+
+// A solid ball: 2/5 m r^2.
+TEST(Sphere, InertiaIsTwoFifthsMassRadiusSquared) {
+  Sphere ball("S", 0.04);
+  const double i = 0.4 * 0.25 * 0.0016;
+  expectInertia(ball.localInertia(0.25), i, i, i);
+  expectInertia(bulletInertia(ball.collisionShape(), 0.25), i, i, i);
+  EXPECT_NEAR(ball.volume(), 4.0 / 3.0 * kPi * 6.4e-5, 1e-18);
+}
+
+// A solid cylinder: m r^2 / 2 about its axis, m (3 r^2 + h^2) / 12 across.
+TEST(Cylinder, EqualRadiiMatchSolidCylinder) {
+  Cylinder c("C", 0.05, 0.05, 0.3);
+  const double m = 2.0;
+  const double axial = m * 0.0025 / 2;
+  const double transverse = m * (3 * 0.0025 + 0.09) / 12;
+  expectInertia(c.localInertia(m), transverse, axial, transverse);
+  expectInertia(bulletInertia(c.collisionShape(), m), transverse, axial, transverse);
+  EXPECT_NEAR(c.centroidHeight(), 0.15, 1e-15);
+  EXPECT_NEAR(c.volume(), kPi * 0.0025 * 0.3, 1e-15);
+}
+
+// As the top radius shrinks the frustum becomes a cone: centroid at h/4,
+// I_axis = 3/10 m R^2, I_across = 3/20 m R^2 + 3/80 m h^2 about the centroid.
+TEST(Cylinder, FrustumTendsToCone) {
+  const double R = 0.1, h = 0.4, m = 3.0;
+  Cylinder cone("K", R, 1e-7, h);
+  // The 1e-7 m top radius moves each quantity by about 1e-6 relative.
+  const double tol = 1e-5;
+  EXPECT_NEAR(cone.centroidHeight(), h / 4, tol * h);
+  const btVector3 i = cone.localInertia(m);
+  EXPECT_NEAR(i.y(), 0.3 * m * R * R, tol * 0.3 * m * R * R);
+  const double across = 0.15 * m * R * R + 3.0 / 80.0 * m * h * h;
+  EXPECT_NEAR(i.x(), across, tol * across);
+  EXPECT_NEAR(cone.volume(), kPi * R * R * h / 3, tol * kPi * R * R * h / 3);
+}
+
+// A frustum's volume: pi h (R^2 + R r + r^2) / 3.
+TEST(Cylinder, FrustumVolume) {
+  Cylinder f("F", 0.2, 0.1, 0.3);
+  EXPECT_NEAR(f.volume(), kPi * 0.3 * (0.04 + 0.02 + 0.01) / 3, 1e-15);
+  EXPECT_NEAR(f.below() + f.above(), 0.3, 1e-15);
+  EXPECT_LT(f.below(), 0.15);  // the wide base pulls the centroid down
+}
+
+// Bullet's 4 cm default margin would exceed a 2 cm cube's 1 cm half side.
+TEST(Shape, MarginScalesWithTheBody) {
+  Cube small("s", 0.02);
+  EXPECT_NEAR(small.collisionShape().getMargin(), 0.05 * 0.01, 1e-15);
+  Cube large("L", 5.0);
+  EXPECT_NEAR(large.collisionShape().getMargin(), 0.04, 1e-15);
+  // The box keeps its outer size whatever the margin.
+  const btVector3 outer = static_cast<btBoxShape&>(small.collisionShape()).getHalfExtentsWithMargin();
+  EXPECT_NEAR(outer.x(), 0.01, 1e-15);
+}
+
+// A push on a box face meets the surface where the ray from the centre
+// leaves the box.
+TEST(SolidBox, SurfaceDistanceAlongAHorizontalRay) {
+  SolidBox box("B", 0.4, 0.1, 0.2);
+  EXPECT_NEAR(box.surfaceDistance(btVector3(1, 0, 0)), 0.2, 1e-15);
+  EXPECT_NEAR(box.surfaceDistance(btVector3(0, 0, -1)), 0.1, 1e-15);
+  const double c = std::cos(kPi / 4);
+  EXPECT_NEAR(box.surfaceDistance(btVector3(c, 0, c)), 0.1 / c, 1e-12);
+}
+
+}  // namespace
+}  // namespace tabletop

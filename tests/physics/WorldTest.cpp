@@ -1,0 +1,152 @@
+// The World: resting heights, pushes, report statuses, supports, events,
+// determinism.
+
+#include "physics/World.h"
+
+#include <algorithm>
+
+#include <gtest/gtest.h>
+
+#include "core/Angle.h"
+#include "core/StateHash.h"
+#include "physics/Cube.h"
+#include "physics/Sphere.h"
+#include "support/PhysicsFixture.h"
+
+namespace tabletop {
+namespace {
+
+using test::PhysicsFixture;
+
+std::vector<EventType> typesOf(const std::vector<Event>& events, const std::string& entity) {
+  std::vector<EventType> types;
+  for (const Event& e : events) {
+    if (e.entity == entity || e.other == entity) types.push_back(e.type);
+  }
+  return types;
+}
+
+// Few-centimetre bodies rest at their true height: the margin is scaled to
+// the body, so nothing floats a margin above the table. Tolerance 1 micron.
+TEST_F(PhysicsFixture, SmallBodiesRestAtTheirTrueHeight) {
+  World& w = makeTable();
+  const double top = w.table().topHeight();
+  const double seat = 1e-9;  // as the scene builder seats bodies
+  Shape& cube = w.addEntity(std::make_unique<Cube>("cube", 0.03), 0.05, Material{},
+                            btVector3(0, top + 0.015 - seat, 0), 0);
+  Shape& ball = w.addEntity(std::make_unique<Sphere>("ball", 0.02), 0.03, Material{0.5, 0.001, 0.001, 0},
+                            btVector3(0.2, top + 0.02 - seat, 0), 0);
+  Shape& floorCube = w.addEntity(std::make_unique<Cube>("floor", 0.02), 0.02, Material{},
+                                 btVector3(2.0, 0.01 - seat, 0), 0);
+  simulate(2.0);
+  EXPECT_NEAR(cube.position().y(), top + 0.015, 1e-6);
+  EXPECT_NEAR(ball.position().y(), top + 0.02, 1e-6);
+  EXPECT_NEAR(floorCube.position().y(), 0.01, 1e-6);
+  EXPECT_EQ(cube.support(), "table");
+  EXPECT_EQ(floorCube.support(), "ground");
+  EXPECT_TRUE(w.events().empty());
+}
+
+// A push through the face centre passes through the centre of mass: the
+// cube slides without turning (yaw change under 0.1 degree).
+TEST_F(PhysicsFixture, FacePushDoesNotTurnTheCube) {
+  World& w = makeTable();
+  Shape& c = w.addEntity(std::make_unique<Cube>("A", 0.1), 0.5, Material{0.4, 0, 0, 0},
+                         btVector3(-0.3, w.table().topHeight() + 0.05 - 1e-9, 0.1), 30.0);
+  w.push(Arrow{"A", DirectionDef::Left, 0}, {PushMagnitude::Kind::Step, 0.2});
+  simulateUntilRest(5.0);
+  EXPECT_NEAR(c.yawDegrees(), 30.0, 0.1);
+  // Along the turned face's normal: 30 degrees (report 3.8 sense).
+  const btVector3 p = c.position();
+  EXPECT_NEAR(p.x(), -0.3 + 0.2 * std::cos(kPi / 6), 0.002);
+  EXPECT_NEAR(p.z(), 0.1 - 0.2 * std::sin(kPi / 6), 0.002);
+}
+
+// Report 3.4 and example 1: pushed past the right edge, the cube becomes
+// DropFromRightEdge, lands on the ground, and once still there
+// FinishDropSimulation; the events say so, in that order.
+TEST_F(PhysicsFixture, CubePushedOffTheEdgeDropsAndFinishes) {
+  World& w = makeTable();
+  Shape& c = w.addEntity(std::make_unique<Cube>("A", 0.1), 0.5, Material{0.4, 0, 0, 0},
+                         btVector3(0.4, w.table().topHeight() + 0.05 - 1e-9, 0), 0);
+  w.push(Arrow{"A", DirectionDef::Left, 0}, {PushMagnitude::Kind::Step, 0.4});
+  bool sawDrop = false;
+  for (int i = 0; i < 240 * 5 && !(sawDrop && w.allAtRest()); ++i) {
+    w.step();
+    if (c.status() == EntityPositionStatus::DropFromRightEdge) {
+      sawDrop = true;
+      EXPECT_GT(c.position().x(), w.table().xRight());
+    }
+  }
+  EXPECT_TRUE(sawDrop);
+  EXPECT_EQ(c.status(), EntityPositionStatus::FinishDropSimulation);
+  EXPECT_EQ(c.support(), "ground");
+  EXPECT_NEAR(c.position().y(), 0.05, 1e-3);
+  EXPECT_EQ(typesOf(w.events(), "A"), (std::vector<EventType>{EventType::Push, EventType::LeavesTable,
+                                                                EventType::Lands, EventType::AtRest}));
+  const auto leaves = std::find_if(w.events().begin(), w.events().end(),
+                                   [](const Event& e) { return e.type == EventType::LeavesTable; });
+  EXPECT_EQ(leaves->edge, "Right");
+}
+
+// A cube on a cube is supported by it; the pair touches from the start, so
+// no contact "begins".
+TEST_F(PhysicsFixture, StackedCubeIsSupportedByTheCubeBelow) {
+  World& w = makeTable();
+  const double top = w.table().topHeight();
+  w.addEntity(std::make_unique<Cube>("big", 0.2), 2.0, Material{}, btVector3(0, top + 0.1 - 1e-9, 0), 0);
+  Shape& small = w.addEntity(std::make_unique<Cube>("small", 0.08), 0.3, Material{},
+                             btVector3(0, top + 0.24 - 2e-9, 0), 0);
+  simulate(1.0);
+  EXPECT_EQ(small.support(), "big");
+  EXPECT_NEAR(small.position().y(), top + 0.24, 1e-6);
+  EXPECT_TRUE(w.events().empty());
+}
+
+// Two cubes: the pushed one meets the other, and the contact event comes
+// once, between the push and the struck cube coming to rest.
+TEST_F(PhysicsFixture, CollisionIsReportedOnce) {
+  World& w = makeTable();
+  const double y = w.table().topHeight() + 0.05 - 1e-9;
+  w.addEntity(std::make_unique<Cube>("A", 0.1), 0.5, Material{0.4, 0, 0, 0}, btVector3(-0.3, y, 0), 0);
+  w.addEntity(std::make_unique<Cube>("B", 0.1), 0.5, Material{0.4, 0, 0, 0}, btVector3(0.0, y, 0), 0);
+  w.push(Arrow{"A", DirectionDef::Left, 0}, {PushMagnitude::Kind::Step, 0.4});
+  simulateUntilRest(5.0);
+  EXPECT_EQ(typesOf(w.events(), "B"), (std::vector<EventType>{EventType::ContactBegin, EventType::AtRest}));
+  EXPECT_GT(w.find("B")->position().x(), 0.01);
+}
+
+TEST_F(PhysicsFixture, OverlapsAreFound) {
+  World& w = makeTable();
+  const double y = w.table().topHeight() + 0.05;
+  w.addEntity(std::make_unique<Cube>("A", 0.1), 0.5, Material{}, btVector3(0.0, y, 0), 0);
+  w.addEntity(std::make_unique<Cube>("B", 0.1), 0.5, Material{}, btVector3(0.09, y, 0), 0);
+  w.addEntity(std::make_unique<Cube>("C", 0.1), 0.5, Material{}, btVector3(0.4, y - 0.02, 0), 0);
+  const auto found = w.overlaps(1e-5);
+  ASSERT_EQ(found.size(), 2u);
+  std::vector<std::string> names;
+  for (const auto& [a, b] : found) names.push_back(std::min(a, b) + "-" + std::max(a, b));
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"A-B", "C-table"}));
+}
+
+// The same scene and pushes give bit-identical states.
+TEST(WorldDeterminism, SameSceneSameHash) {
+  auto run = [] {
+    Settings s;
+    World w(s, TableSpec{});
+    const double y = 0.8 - 1e-9;
+    w.addEntity(std::make_unique<Cube>("A", 0.1), 0.5, Material{0.4, 0, 0, 0}, btVector3(-0.3, y, 0.02), 10);
+    w.addEntity(std::make_unique<Cube>("B", 0.1), 0.5, Material{0.4, 0, 0, 0}, btVector3(0.2, y, 0), 0);
+    w.addEntity(std::make_unique<Sphere>("S", 0.03), 0.2, Material{0.4, 0.002, 0.002, 0.5},
+                btVector3(0, 0.78 - 1e-9, 0.25), 0);
+    w.push(Arrow{"A", DirectionDef::Left, 0}, {PushMagnitude::Kind::Step, 0.9});
+    w.push(Arrow{"S", std::nullopt, -20}, {PushMagnitude::Kind::Impulse, 0.3});
+    for (int i = 0; i < 600; ++i) w.step();
+    return stateHash(w.snapshot());
+  };
+  EXPECT_EQ(run(), run());
+}
+
+}  // namespace
+}  // namespace tabletop

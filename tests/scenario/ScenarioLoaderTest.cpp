@@ -1,0 +1,180 @@
+// Scenario files: a good one loads with its defaults; each bad one is
+// refused with the place and what was expected.
+
+#include "scenario/ScenarioLoader.h"
+
+#include <gtest/gtest.h>
+
+#include "scenario/ScenarioError.h"
+
+namespace tabletop {
+namespace {
+
+const char* const kGood = R"({
+  // comments are allowed
+  "version": 1,
+  "name": "good",
+  "table": { "size": [1.0, 0.6], "height": 0.7 },
+  "settings": { "timestep": 0.005, "duration": 3 },
+  "entities": [
+    { "name": "A", "shape": "cube", "size": 0.1, "position": [0.1, -0.1], "mass": 0.5,
+      "yaw": 15, "colour": [1, 2, 3], "material": { "friction": 0.3 } },
+    { "name": "B", "shape": "sphere", "size": 0.02, "position": [0.1, -0.1], "on": "A", "mass": 0.1,
+      "material": { "rolling_friction": 0.001 } },
+    { "name": "C", "shape": "box", "size": [0.1, 0.2, 0.3], "position": [0.3, 0.5, 0.2], "mass": 1 }
+  ],
+  "script": [
+    { "t": 0.5, "push": { "entity": "A", "direction": "Front", "step": 0.1 } },
+    { "wait": "rest", "timeout": 2 },
+    { "push": { "entity": "B", "angle": 30, "impulse": 0.01 } },
+    { "wait": 0.25 },
+    { "t": 2.0, "rotate": { "entity": "C", "angle": -45 } }
+  ]
+})";
+
+TEST(ScenarioLoader, ReadsEveryField) {
+  const Scenario s = ScenarioLoader::loadText(kGood, "good.json");
+  EXPECT_EQ(s.name, "good");
+  EXPECT_DOUBLE_EQ(s.table.width, 1.0);
+  EXPECT_DOUBLE_EQ(s.table.height, 0.7);
+  EXPECT_DOUBLE_EQ(s.table.thickness, TableSpec{}.thickness);
+  EXPECT_DOUBLE_EQ(s.settings.timestep, 0.005);
+  EXPECT_EQ(s.settings.iterations, Settings{}.iterations);
+  ASSERT_EQ(s.entities.size(), 3u);
+  EXPECT_EQ(s.entities[0].on, "table");  // [x, z] means on the table
+  EXPECT_DOUBLE_EQ(s.entities[0].position.z, -0.1);
+  EXPECT_DOUBLE_EQ(s.entities[0].material.friction, 0.3);
+  EXPECT_EQ(s.entities[0].colour.b, 3);
+  EXPECT_EQ(s.entities[1].on, "A");
+  EXPECT_DOUBLE_EQ(s.entities[1].material.spinningFriction, 0.001);  // follows rolling friction
+  EXPECT_TRUE(s.entities[2].on.empty());
+  EXPECT_DOUBLE_EQ(s.entities[2].position.y, 0.5);
+  ASSERT_EQ(s.script.size(), 5u);
+  EXPECT_EQ(s.script[0].arrow.face, DirectionDef::Front);
+  EXPECT_EQ(s.script[0].magnitude.kind, PushMagnitude::Kind::Step);
+  EXPECT_EQ(s.script[1].type, Action::Type::WaitRest);
+  EXPECT_DOUBLE_EQ(s.script[1].seconds, 2.0);
+  EXPECT_FALSE(s.script[2].arrow.face.has_value());
+  EXPECT_DOUBLE_EQ(s.script[2].arrow.angleDegrees, 30.0);
+  EXPECT_EQ(s.script[3].type, Action::Type::WaitTime);
+  EXPECT_EQ(s.script[4].type, Action::Type::Rotate);
+  EXPECT_DOUBLE_EQ(s.script[4].degrees, -45.0);
+}
+
+// One bad input: the text, the JSON pointer expected in the first problem,
+// and a piece of its message.
+struct BadInput {
+  const char* name;
+  std::string text;
+  std::string path;
+  std::string message;
+};
+
+// A scenario with one entity A; `extra` adds fields to it.
+std::string entity(const std::string& extra, const std::string& shape = "\"cube\"",
+                   const std::string& size = "0.1", const std::string& mass = "1") {
+  return R"({"version": 1, "name": "t", "entities": [{"name": "A", "shape": )" + shape +
+         ", \"size\": " + size + ", \"position\": [0, 0], \"mass\": " + mass + extra + "}]}";
+}
+
+std::string withScript(const std::string& actions) {
+  return R"({"version": 1, "name": "t", "settings": {"duration": 5},
+    "entities": [{"name": "A", "shape": "cube", "size": 0.1, "position": [0, 0], "mass": 1}],
+    "script": [)" + actions + "]}";
+}
+
+class BadScenario : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(BadScenario, IsRefusedWithPlaceAndReason) {
+  const BadInput& c = GetParam();
+  try {
+    ScenarioLoader::loadText(c.text, "bad.json");
+    FAIL() << "accepted: " << c.text;
+  } catch (const ScenarioError& e) {
+    ASSERT_FALSE(e.problems().empty());
+    const Problem& p = e.problems().front();
+    EXPECT_EQ(p.path, c.path) << e.what();
+    EXPECT_NE(p.message.find(c.message), std::string::npos) << e.what();
+    EXPECT_GT(p.line, 0) << e.what();
+    // One line each, starting with the file and its position.
+    for (const std::string& line : e.lines()) {
+      EXPECT_EQ(line.find('\n'), std::string::npos);
+      EXPECT_EQ(line.rfind("bad.json:", 0), 0u) << line;
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Table, BadScenario,
+    ::testing::Values(
+        BadInput{"NotJson", "{\"version\": 1,\n  \"name\": }", "", "not valid JSON"},
+        BadInput{"NotAnObject", "[1, 2]", "", "expected an object"},
+        BadInput{"WrongVersion", R"({"version": 2, "name": "t", "entities": []})", "/version", "expected 1"},
+        BadInput{"NoEntities", R"({"version": 1, "name": "t", "entities": []})", "/entities", "non-empty array"},
+        BadInput{"UnknownShape", entity("", "\"pyramid\""), "/entities/0/shape",
+                 "expected one of cube, sphere, box, cylinder"},
+        BadInput{"ShapeNotAString", entity("", "3"), "/entities/0/shape", "expected a non-empty string"},
+        BadInput{"ZeroSize", entity("", "\"cube\"", "0"), "/entities/0/size",
+                 "expected a positive number, got 0"},
+        BadInput{"NegativeSize", entity("", "\"cube\"", "-0.1"), "/entities/0/size",
+                 "expected a positive number, got -0.1"},
+        BadInput{"InfiniteSize", entity("", "\"cube\"", "1e999"), "", "number overflow parsing '1e999'"},
+        BadInput{"ZeroMass", entity("", "\"cube\"", "0.1", "0"), "/entities/0/mass",
+                 "expected a positive number, got 0"},
+        BadInput{"MisspeltKey", entity(R"(, "material": {"fricton": 0.3})"), "/entities/0/material/fricton",
+                 "unknown key 'fricton'"},
+        BadInput{"BadColour", entity(R"(, "colour": [0, 300, 0])"), "/entities/0/colour/1",
+                 "integer from 0 to 255"},
+        BadInput{"RestitutionAboveOne", entity(R"(, "material": {"restitution": 1.5})"),
+                 "/entities/0/material/restitution", "from 0 to 1"},
+        BadInput{"UnknownSupport", entity(R"(, "on": "shelf")"), "/entities/0/on", "entity listed before"},
+        BadInput{"BoxSizeNotTriple", entity("", "\"box\"", "[0.1, 0.2]"), "/entities/0/size",
+                 "an array of 3 numbers"},
+        BadInput{"MissingMass", R"({"version": 1, "name": "t", "entities": [{"name": "A", "shape": "cube",
+                   "size": 0.1, "position": [0, 0]}]})", "/entities/0", "missing required key 'mass'"},
+        BadInput{"PushUnknownEntity", withScript(R"({"push": {"entity": "Z", "direction": "Left", "step": 0.1}})"),
+                 "/script/0/push/entity", "expected the name of an entity, got \"Z\""},
+        BadInput{"PushBadDirection", withScript(R"({"push": {"entity": "A", "direction": "Up", "step": 0.1}})"),
+                 "/script/0/push/direction", "one of Left, Right, Front, Back"},
+        BadInput{"PushNegativeStep", withScript(R"({"push": {"entity": "A", "direction": "Left", "step": -1}})"),
+                 "/script/0/push/step", "positive number"},
+        BadInput{"PushStepAndImpulse",
+                 withScript(R"({"push": {"entity": "A", "direction": "Left", "step": 1, "impulse": 1}})"),
+                 "/script/0/push", "exactly one of 'step', 'impulse'"},
+        BadInput{"NegativeTime", withScript(R"({"t": -1, "wait": 1})"), "/script/0/t", "non-negative"},
+        BadInput{"TimesOutOfOrder", withScript(R"({"t": 2, "wait": 1}, {"t": 1, "wait": 1})"), "/script/1/t",
+                 "not before the previous action's"},
+        BadInput{"TimeAfterDuration", withScript(R"({"t": 9, "wait": 1})"), "/script/0/t", "within the duration"},
+        BadInput{"TwoActionsInOne", withScript(R"({"wait": 1, "rotate": {"entity": "A", "angle": 5}})"),
+                 "/script/0", "exactly one of 'push', 'rotate', 'wait'"},
+        BadInput{"ZeroTimestep", R"({"version": 1, "name": "t", "settings": {"timestep": 0},
+                   "entities": [{"name": "A", "shape": "cube", "size": 0.1, "position": [0, 0], "mass": 1}]})",
+                 "/settings/timestep", "positive number"},
+        BadInput{"DuplicateName", R"({"version": 1, "name": "t", "entities": [
+                   {"name": "A", "shape": "cube", "size": 0.1, "position": [0, 0], "mass": 1},
+                   {"name": "A", "shape": "cube", "size": 0.1, "position": [0.3, 0], "mass": 1}]})",
+                 "/entities/1/name", "unique name"}),
+    [](const ::testing::TestParamInfo<BadInput>& p) { return p.param.name; });
+
+// Every problem is reported, not only the first, each with its own line.
+TEST(ScenarioLoader, ReportsAllProblemsWithTheirLines) {
+  const std::string text = "{\"version\": 1, \"name\": \"t\",\n\"entities\": [\n"
+                           "  {\"name\": \"A\", \"shape\": \"cube\", \"size\": -1, \"position\": [0, 0], \"mass\": 1},\n"
+                           "  {\"name\": \"B\", \"shape\": \"cube\", \"size\": 0.1, \"position\": [0, 0], \"mass\": -2}\n]}";
+  try {
+    ScenarioLoader::loadText(text, "two.json");
+    FAIL();
+  } catch (const ScenarioError& e) {
+    ASSERT_EQ(e.problems().size(), 2u);
+    EXPECT_EQ(e.problems()[0].line, 3);
+    EXPECT_EQ(e.problems()[1].line, 4);
+    EXPECT_EQ(e.lines()[0].rfind("two.json:3:", 0), 0u) << e.lines()[0];
+  }
+}
+
+TEST(ScenarioLoader, MissingFileIsAScenarioError) {
+  EXPECT_THROW(ScenarioLoader::loadFile("no/such/file.json"), ScenarioError);
+}
+
+}  // namespace
+}  // namespace tabletop
