@@ -38,8 +38,8 @@ btVector3 SolidBox::localInertia(double mass) const {
 // the first face it meets.
 double SolidBox::surfaceDistance(const btVector3& direction) const {
   double t = std::numeric_limits<double>::infinity();
-  if (std::abs(direction.x()) > 1e-12) t = std::min(t, half_.x() / std::abs(direction.x()));
-  if (std::abs(direction.z()) > 1e-12) t = std::min(t, half_.z() / std::abs(direction.z()));
+  if (std::abs(direction.x()) > 1e-12) t = std::min(t, double(half_.x() / std::abs(direction.x())));
+  if (std::abs(direction.z()) > 1e-12) t = std::min(t, double(half_.z() / std::abs(direction.z())));
   return std::isfinite(t) ? t : 0.0;
 }
 

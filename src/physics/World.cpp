@@ -134,7 +134,8 @@ double World::pushImpulse(const Arrow& arrow, const PushMagnitude& magnitude) {
 
 // Report 3.5: a cube is pushed at the centre of a face, perpendicular to it;
 // a sphere through its centre. Both lines of action pass through the centre
-// of mass, so a push turns nothing.
+// of mass, so the push is a central impulse (arm x impulse is zero for
+// parallel vectors; computing it would only add rounding).
 void World::push(const Arrow& arrow, const PushMagnitude& magnitude) {
   start();
   Shape& shape = entity(arrow.entity);
@@ -143,10 +144,8 @@ void World::push(const Arrow& arrow, const PushMagnitude& magnitude) {
   const btVector3 direction = toBullet(pushDirection(angle));
 
   btRigidBody* body = shape.body();
-  const btVector3 local = body->getWorldTransform().getBasis().transpose() * direction;
-  const btVector3 arm = -direction * shape.surfaceDistance(local);
   body->activate(true);
-  body->applyImpulse(direction * impulse, arm);
+  body->applyCentralImpulse(direction * impulse);
 
   const auto i = static_cast<std::size_t>(body->getUserIndex());
   trackers_[i].atRest = false;

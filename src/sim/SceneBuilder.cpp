@@ -4,6 +4,7 @@
 
 #include "physics/Cube.h"
 #include "physics/Cylinder.h"
+#include "physics/Seating.h"
 #include "physics/SolidBox.h"
 #include "physics/Sphere.h"
 #include "scenario/ScenarioError.h"
@@ -13,12 +14,6 @@ namespace {
 
 // Bodies may touch at the start, not interpenetrate deeper than this.
 constexpr double kOverlapTolerance = 1e-5;  // m
-
-// An entity placed "on" something is seated this far into it. Placed at
-// exact touch, rounding can leave a 1e-17 m gap that Bullet's box-box test
-// reports as no contact, and the body then falls for one step (0.17 mm at
-// 240 Hz) before the solver catches it.
-constexpr double kSeatDepth = 1e-9;  // m
 
 }  // namespace
 
@@ -45,14 +40,15 @@ std::unique_ptr<World> buildWorld(const Scenario& scenario, const Settings& sett
     indexOf[e.name] = indexOf.size();
     std::unique_ptr<Shape> shape = makeShape(e);
     btVector3 centre(e.position.x, e.position.y, e.position.z);
-    // "on": the entity's lowest point rests on the top of what it names.
+    // "on": the entity's lowest point rests on the top of what it names,
+    // seated a hair into it (see Seating.h).
     if (e.on == "table") {
-      centre.setY(scenario.table.height + shape->below() - kSeatDepth);
+      centre.setY(seated(scenario.table.height + shape->below()));
     } else if (e.on == "ground") {
-      centre.setY(shape->below() - kSeatDepth);
+      centre.setY(seated(shape->below()));
     } else if (!e.on.empty()) {
       const Shape* base = world->find(e.on);
-      centre.setY(base->position().y() + base->above() + shape->below() - kSeatDepth);
+      centre.setY(seated(base->position().y() + base->above() + shape->below()));
     }
     world->addEntity(std::move(shape), e.mass, e.material, centre, e.yawDegrees);
   }

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "physics/Cube.h"
+#include "physics/Seating.h"
 #include "physics/Sphere.h"
 #include "support/PhysicsFixture.h"
 
@@ -76,7 +77,7 @@ TEST_P(StepTravel, TravelsTheStepWithinOnePercent) {
   const double below = shape->below();
   const Material material{0.4, c.sphere ? 0.002 : 0.0, c.sphere ? 0.002 : 0.0, 0.0};
   Shape& e = w.addEntity(std::move(shape), 0.3, material,
-                         btVector3(0, w.table().topHeight() + below - 1e-9, 0), 0.0);
+                         btVector3(0, seated(w.table().topHeight() + below), 0), 0.0);
   const btVector3 start = e.position();
   w.push(Arrow{"E", std::nullopt, c.angle}, {PushMagnitude::Kind::Step, c.step});
   simulateUntilRest(10.0);

@@ -10,6 +10,7 @@
 #include "core/Angle.h"
 #include "core/StateHash.h"
 #include "physics/Cube.h"
+#include "physics/Seating.h"
 #include "physics/Sphere.h"
 #include "support/PhysicsFixture.h"
 
@@ -31,13 +32,12 @@ std::vector<EventType> typesOf(const std::vector<Event>& events, const std::stri
 TEST_F(PhysicsFixture, SmallBodiesRestAtTheirTrueHeight) {
   World& w = makeTable();
   const double top = w.table().topHeight();
-  const double seat = 1e-9;  // as the scene builder seats bodies
   Shape& cube = w.addEntity(std::make_unique<Cube>("cube", 0.03), 0.05, Material{},
-                            btVector3(0, top + 0.015 - seat, 0), 0);
+                            btVector3(0, seated(top + 0.015), 0), 0);
   Shape& ball = w.addEntity(std::make_unique<Sphere>("ball", 0.02), 0.03, Material{0.5, 0.001, 0.001, 0},
-                            btVector3(0.2, top + 0.02 - seat, 0), 0);
+                            btVector3(0.2, seated(top + 0.02), 0), 0);
   Shape& floorCube = w.addEntity(std::make_unique<Cube>("floor", 0.02), 0.02, Material{},
-                                 btVector3(2.0, 0.01 - seat, 0), 0);
+                                 btVector3(2.0, seated(0.01), 0), 0);
   simulate(2.0);
   EXPECT_NEAR(cube.position().y(), top + 0.015, 1e-6);
   EXPECT_NEAR(ball.position().y(), top + 0.02, 1e-6);
@@ -52,7 +52,7 @@ TEST_F(PhysicsFixture, SmallBodiesRestAtTheirTrueHeight) {
 TEST_F(PhysicsFixture, FacePushDoesNotTurnTheCube) {
   World& w = makeTable();
   Shape& c = w.addEntity(std::make_unique<Cube>("A", 0.1), 0.5, Material{0.4, 0, 0, 0},
-                         btVector3(-0.3, w.table().topHeight() + 0.05 - 1e-9, 0.1), 30.0);
+                         btVector3(-0.3, seated(w.table().topHeight() + 0.05), 0.1), 30.0);
   w.push(Arrow{"A", DirectionDef::Left, 0}, {PushMagnitude::Kind::Step, 0.2});
   simulateUntilRest(5.0);
   EXPECT_NEAR(c.yawDegrees(), 30.0, 0.1);
@@ -68,7 +68,7 @@ TEST_F(PhysicsFixture, FacePushDoesNotTurnTheCube) {
 TEST_F(PhysicsFixture, CubePushedOffTheEdgeDropsAndFinishes) {
   World& w = makeTable();
   Shape& c = w.addEntity(std::make_unique<Cube>("A", 0.1), 0.5, Material{0.4, 0, 0, 0},
-                         btVector3(0.4, w.table().topHeight() + 0.05 - 1e-9, 0), 0);
+                         btVector3(0.4, seated(w.table().topHeight() + 0.05), 0), 0);
   w.push(Arrow{"A", DirectionDef::Left, 0}, {PushMagnitude::Kind::Step, 0.4});
   bool sawDrop = false;
   for (int i = 0; i < 240 * 5 && !(sawDrop && w.allAtRest()); ++i) {
@@ -94,9 +94,9 @@ TEST_F(PhysicsFixture, CubePushedOffTheEdgeDropsAndFinishes) {
 TEST_F(PhysicsFixture, StackedCubeIsSupportedByTheCubeBelow) {
   World& w = makeTable();
   const double top = w.table().topHeight();
-  w.addEntity(std::make_unique<Cube>("big", 0.2), 2.0, Material{}, btVector3(0, top + 0.1 - 1e-9, 0), 0);
+  w.addEntity(std::make_unique<Cube>("big", 0.2), 2.0, Material{}, btVector3(0, seated(top + 0.1), 0), 0);
   Shape& small = w.addEntity(std::make_unique<Cube>("small", 0.08), 0.3, Material{},
-                             btVector3(0, top + 0.24 - 2e-9, 0), 0);
+                             btVector3(0, seated(seated(top + 0.1) + 0.14), 0), 0);
   simulate(1.0);
   EXPECT_EQ(small.support(), "big");
   EXPECT_NEAR(small.position().y(), top + 0.24, 1e-6);
@@ -107,7 +107,7 @@ TEST_F(PhysicsFixture, StackedCubeIsSupportedByTheCubeBelow) {
 // once, between the push and the struck cube coming to rest.
 TEST_F(PhysicsFixture, CollisionIsReportedOnce) {
   World& w = makeTable();
-  const double y = w.table().topHeight() + 0.05 - 1e-9;
+  const double y = seated(w.table().topHeight() + 0.05);
   w.addEntity(std::make_unique<Cube>("A", 0.1), 0.5, Material{0.4, 0, 0, 0}, btVector3(-0.3, y, 0), 0);
   w.addEntity(std::make_unique<Cube>("B", 0.1), 0.5, Material{0.4, 0, 0, 0}, btVector3(0.0, y, 0), 0);
   w.push(Arrow{"A", DirectionDef::Left, 0}, {PushMagnitude::Kind::Step, 0.4});
@@ -135,11 +135,11 @@ TEST(WorldDeterminism, SameSceneSameHash) {
   auto run = [] {
     Settings s;
     World w(s, TableSpec{});
-    const double y = 0.8 - 1e-9;
+    const double y = seated(0.8);
     w.addEntity(std::make_unique<Cube>("A", 0.1), 0.5, Material{0.4, 0, 0, 0}, btVector3(-0.3, y, 0.02), 10);
     w.addEntity(std::make_unique<Cube>("B", 0.1), 0.5, Material{0.4, 0, 0, 0}, btVector3(0.2, y, 0), 0);
     w.addEntity(std::make_unique<Sphere>("S", 0.03), 0.2, Material{0.4, 0.002, 0.002, 0.5},
-                btVector3(0, 0.78 - 1e-9, 0.25), 0);
+                btVector3(0, seated(0.78), 0.25), 0);
     w.push(Arrow{"A", DirectionDef::Left, 0}, {PushMagnitude::Kind::Step, 0.9});
     w.push(Arrow{"S", std::nullopt, -20}, {PushMagnitude::Kind::Impulse, 0.3});
     for (int i = 0; i < 600; ++i) w.step();
