@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/Angle.h"
+#include "core/EnumNames.h"
 
 namespace tabletop {
 
@@ -17,10 +18,9 @@ std::string_view toString(DirectionDef d) {
 }
 
 std::optional<DirectionDef> directionFromString(std::string_view name) {
-  for (DirectionDef d : {DirectionDef::Left, DirectionDef::Right, DirectionDef::Front, DirectionDef::Back}) {
-    if (toString(d) == name) return d;
-  }
-  return std::nullopt;
+  constexpr DirectionDef all[] = {DirectionDef::Left, DirectionDef::Right, DirectionDef::Front,
+                                  DirectionDef::Back};
+  return enumFromName(name, all);
 }
 
 double directionAngleDegrees(DirectionDef d) {

@@ -1,5 +1,7 @@
 #include "core/EntityPositionStatus.h"
 
+#include "core/EnumNames.h"
+
 namespace tabletop {
 
 std::string_view toString(EntityPositionStatus s) {
@@ -15,12 +17,11 @@ std::string_view toString(EntityPositionStatus s) {
 }
 
 std::optional<EntityPositionStatus> statusFromString(std::string_view name) {
-  for (auto s : {EntityPositionStatus::OnTable, EntityPositionStatus::DropFromLeftEdge,
-                 EntityPositionStatus::DropFromFrontEdge, EntityPositionStatus::DropFromRightEdge,
-                 EntityPositionStatus::DropFromBackEdge, EntityPositionStatus::FinishDropSimulation}) {
-    if (toString(s) == name) return s;
-  }
-  return std::nullopt;
+  constexpr EntityPositionStatus all[] = {
+      EntityPositionStatus::OnTable,           EntityPositionStatus::DropFromLeftEdge,
+      EntityPositionStatus::DropFromFrontEdge, EntityPositionStatus::DropFromRightEdge,
+      EntityPositionStatus::DropFromBackEdge,  EntityPositionStatus::FinishDropSimulation};
+  return enumFromName(name, all);
 }
 
 bool isDropping(EntityPositionStatus s) { return !edgeName(s).empty(); }

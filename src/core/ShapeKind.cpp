@@ -1,5 +1,7 @@
 #include "core/ShapeKind.h"
 
+#include "core/EnumNames.h"
+
 namespace tabletop {
 
 std::string_view toString(ShapeKind k) {
@@ -13,10 +15,8 @@ std::string_view toString(ShapeKind k) {
 }
 
 std::optional<ShapeKind> shapeKindFromString(std::string_view name) {
-  for (auto k : {ShapeKind::Cube, ShapeKind::Sphere, ShapeKind::SolidBox, ShapeKind::Cylinder}) {
-    if (toString(k) == name) return k;
-  }
-  return std::nullopt;
+  constexpr ShapeKind all[] = {ShapeKind::Cube, ShapeKind::Sphere, ShapeKind::SolidBox, ShapeKind::Cylinder};
+  return enumFromName(name, all);
 }
 
 }  // namespace tabletop
