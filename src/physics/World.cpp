@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <stdexcept>
 
 #include "core/Angle.h"
@@ -102,7 +101,10 @@ Shape& World::entity(const std::string& name) {
 }
 
 std::string World::participantName(const btCollisionObject* object) const {
-  const int i = object->getUserIndex();
+  return participantName(object->getUserIndex());
+}
+
+std::string World::participantName(int i) const {
   if (i == kTableIndex) return "table";
   if (i == kGroundIndex) return "ground";
   return entities_.at(static_cast<std::size_t>(i))->name();
@@ -219,37 +221,49 @@ bool World::allAtRest() const {
 void World::observe(bool emit) {
   const std::size_t n = entities_.size();
 
-  // Contacts: how close each entity pair is, and what pushes each up.
-  std::map<std::pair<int, int>, double> gap;
-  std::vector<std::map<std::string, double>> supportImpulse(n);
+  // Contacts, one entry per (entity, other body) pair and side: how close
+  // they are, and how hard the other pushes the entity up. Entries are
+  // merged by sorting, in a buffer kept from step to step.
+  contacts_.clear();
   for (int m = 0; m < dispatcher_->getNumManifolds(); ++m) {
     const btPersistentManifold* manifold = dispatcher_->getManifoldByIndexInternal(m);
     const int a = manifold->getBody0()->getUserIndex();
     const int b = manifold->getBody1()->getUserIndex();
     for (int p = 0; p < manifold->getNumContacts(); ++p) {
       const btManifoldPoint& point = manifold->getContactPoint(p);
-      if (a >= 0 && b >= 0) {
-        const auto pair = std::make_pair(std::min(a, b), std::max(a, b));
-        auto [it, added] = gap.emplace(pair, point.getDistance());
-        if (!added) it->second = std::min(it->second, double(point.getDistance()));
-      }
-      if (point.getDistance() > kTouchDistance) continue;
+      const double distance = point.getDistance();
+      const bool touching = distance <= kTouchDistance;
       // The normal on B points from B towards A.
       const double up = point.m_normalWorldOnB.y();
       const double impulse = point.getAppliedImpulse();
-      if (a >= 0 && up > kSupportNormalY) {
-        supportImpulse[a][participantName(manifold->getBody1())] += impulse;
-      }
-      if (b >= 0 && -up > kSupportNormalY) {
-        supportImpulse[b][participantName(manifold->getBody0())] += impulse;
-      }
+      if (a >= 0) contacts_.push_back({a, b, distance, touching && up > kSupportNormalY ? impulse : -1.0});
+      if (b >= 0) contacts_.push_back({b, a, distance, touching && -up > kSupportNormalY ? impulse : -1.0});
     }
   }
+  std::sort(contacts_.begin(), contacts_.end(), [](const Contact& x, const Contact& y) {
+    return x.entity != y.entity ? x.entity < y.entity : x.other < y.other;
+  });
+  // Merge: the closest distance, and the summed upward impulse (or -1 when
+  // the other body does not hold the entity up).
+  std::size_t merged = 0;
+  for (std::size_t k = 0; k < contacts_.size(); ++k) {
+    Contact& c = contacts_[k];
+    if (merged > 0 && contacts_[merged - 1].entity == c.entity && contacts_[merged - 1].other == c.other) {
+      Contact& into = contacts_[merged - 1];
+      into.distance = std::min(into.distance, c.distance);
+      if (c.support >= 0) into.support = std::max(into.support, 0.0) + c.support;
+    } else {
+      contacts_[merged++] = c;
+    }
+  }
+  contacts_.resize(merged);
 
   std::set<std::pair<int, int>> touching;
-  for (const auto& [pair, distance] : gap) {
+  for (const Contact& c : contacts_) {
+    if (c.other < 0 || c.entity > c.other) continue;  // each entity pair once
+    const auto pair = std::make_pair(c.entity, c.other);
     const bool was = touching_.count(pair) > 0;
-    if (distance <= kTouchDistance || (was && distance <= kApartDistance)) {
+    if (c.distance <= kTouchDistance || (was && c.distance <= kApartDistance)) {
       touching.insert(pair);
       if (emit && !was) {
         Event e;
@@ -263,30 +277,36 @@ void World::observe(bool emit) {
   }
   touching_ = std::move(touching);
 
+  // Support: the body pushing each entity up hardest (ties: the lower
+  // index, the table and ground first).
+  std::vector<int> support(n, kNoSupport);
+  std::vector<double> strongest(n, -1.0);
+  for (const Contact& c : contacts_) {
+    if (c.support > strongest[c.entity]) {
+      strongest[c.entity] = c.support;
+      support[c.entity] = c.other;
+    }
+  }
+
   for (std::size_t i = 0; i < n; ++i) {
     Shape& shape = *entities_[i];
     Tracker& tracker = trackers_[i];
 
-    // Support: the body pushing up hardest (ties: the first by name).
-    std::string support = "none";
-    double best = -1.0;
-    for (const auto& [name, impulse] : supportImpulse[i]) {
-      if (impulse > best) {
-        best = impulse;
-        support = name;
+    // A new support that is not the last one means the entity landed.
+    if (support[i] != tracker.support) {
+      tracker.support = support[i];
+      shape.setSupport(support[i] == kNoSupport ? "none" : participantName(support[i]));
+      if (support[i] != kNoSupport) {
+        if (emit && tracker.lastSupport != kNoSupport && support[i] != tracker.lastSupport) {
+          Event e;
+          e.t = time_;
+          e.type = EventType::Lands;
+          e.entity = shape.name();
+          e.on = shape.support();
+          record(e);
+        }
+        tracker.lastSupport = support[i];
       }
-    }
-    shape.setSupport(support);
-    if (support != "none") {
-      if (emit && !tracker.lastSupport.empty() && support != tracker.lastSupport) {
-        Event e;
-        e.t = time_;
-        e.type = EventType::Lands;
-        e.entity = shape.name();
-        e.on = support;
-        record(e);
-      }
-      tracker.lastSupport = support;
     }
 
     // Report 3.4: the centre passing an edge starts the drop.

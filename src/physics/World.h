@@ -67,9 +67,13 @@ class World : public Simulation {
   const std::vector<Event>& events() const override { return events_; }
 
  private:
+  // A support index that names no body.
+  static constexpr int kNoSupport = -100;
+
   // Per-entity bookkeeping that is not the report's.
   struct Tracker {
-    std::string lastSupport;  // the last support that was not "none"
+    int support = kNoSupport;      // user index of the current support
+    int lastSupport = kNoSupport;  // the last support that was not none
     double quietSince = -1.0;  // when the entity last became slow, or -1
     bool atRest = true;
   };
@@ -79,6 +83,15 @@ class World : public Simulation {
   void observe(bool emit);
   void record(const Event& e);
   std::string participantName(const btCollisionObject* object) const;
+  std::string participantName(int userIndex) const;
+
+  // One body touching an entity, as observe() gathers them.
+  struct Contact {
+    int entity;       // index of the entity
+    int other;        // user index of the other body
+    double distance;  // closest point, m (negative: penetration)
+    double support;   // upward normal impulse, N*s; -1 if it does not hold the entity up
+  };
 
   Settings settings_;
   std::unique_ptr<btDefaultCollisionConfiguration> configuration_;
@@ -91,6 +104,7 @@ class World : public Simulation {
   std::vector<std::unique_ptr<Shape>> entities_;
   std::vector<Tracker> trackers_;
   std::set<std::pair<int, int>> touching_;
+  std::vector<Contact> contacts_;  // scratch, kept to avoid reallocating
   std::vector<Event> events_;
   double time_ = 0.0;
   long steps_ = 0;
