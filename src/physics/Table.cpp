@@ -43,13 +43,10 @@ btVector3 Table::legCentre(int i) const {
   return btVector3(spec_.centreX + x, 0.5 * (spec_.height - spec_.thickness), spec_.centreZ + z);
 }
 
-// Report 3.4: the entity leaves the table once its centre passes an edge.
+rules::TableEdges Table::edges() const { return {xLeft(), xRight(), zBack(), zFront()}; }
+
 EntityPositionStatus Table::statusAt(double x, double z) const {
-  if (x > xRight()) return EntityPositionStatus::DropFromRightEdge;
-  if (x < xLeft()) return EntityPositionStatus::DropFromLeftEdge;
-  if (z > zFront()) return EntityPositionStatus::DropFromFrontEdge;
-  if (z < zBack()) return EntityPositionStatus::DropFromBackEdge;
-  return EntityPositionStatus::OnTable;
+  return rules::dropStatus({x, 0.0, z}, edges());
 }
 
 }  // namespace tabletop

@@ -9,6 +9,7 @@
 #include "core/TableSpec.h"
 #include "physics/Cylinder.h"
 #include "physics/SolidBox.h"
+#include "rules/ReportRules.h"
 
 namespace tabletop {
 
@@ -33,10 +34,10 @@ class Table {
   double zFront() const { return spec_.centreZ + 0.5 * spec_.depth; }
   /// Height of the top surface above the ground.
   double topHeight() const { return spec_.height; }
+  /// The four edges, as the report's rules take them.
+  rules::TableEdges edges() const;
 
-  /// The report's drop test (3.4) for a centre at (x, z): OnTable inside the
-  /// edges (inclusive), else DropFrom...Edge for the first edge passed in
-  /// the report's order X_R, X_L, Z_F, Z_B.
+  /// The report's drop test (3.4, rules::dropStatus) for a centre at (x, z).
   EntityPositionStatus statusAt(double x, double z) const;
 
   const SolidBox& top() const { return *top_; }
