@@ -2,10 +2,10 @@
 
 #include <exception>
 #include <iostream>
+#include <map>
 
 #include <CLI/CLI.hpp>
 
-#include "physics/World.h"
 #include "scenario/ScenarioError.h"
 #include "scenario/ScenarioLoader.h"
 #include "sim/ResultFormat.h"
@@ -14,8 +14,15 @@
 
 namespace tabletop {
 
-void addRunOptions(CLI::App& command, RunOptions& options) {
+void addRunOptions(CLI::App& command, RunOptions& options, bool withMode) {
   command.add_flag("--json", options.json, "Print the outcome as JSON instead of text");
+  if (withMode) {
+    std::map<std::string, SimulationMode> modes;
+    for (SimulationMode m : kAllModes) modes.emplace(std::string(toString(m)), m);
+    command.add_option("--mode", options.mode, "bullet: full physics; compat: Bullet held to the report's rules; "
+                                               "rules: the report's rules alone")
+        ->transform(CLI::CheckedTransformer(modes));
+  }
   command.add_option("--timestep", options.timestep, "Fixed timestep in seconds (overrides the scenario)")
       ->check(CLI::PositiveNumber);
   command.add_option("--iterations", options.iterations, "Solver iterations per step (overrides the scenario)")
@@ -24,19 +31,25 @@ void addRunOptions(CLI::App& command, RunOptions& options) {
       ->check(CLI::PositiveNumber);
 }
 
+Scenario loadScenario(const ScenarioSource& source, const RunOptions& options, Settings& settings) {
+  Scenario scenario = source.text ? ScenarioLoader::loadText(*source.text, source.name)
+                                  : ScenarioLoader::loadFile(source.name);
+  settings = scenario.settings;
+  if (options.timestep) settings.timestep = *options.timestep;
+  if (options.iterations) settings.iterations = *options.iterations;
+  if (options.duration) settings.duration = *options.duration;
+  return scenario;
+}
+
 int runScenarios(const RunOptions& options, std::ostream& out, std::ostream& err) {
   std::vector<RunResult> results;
   bool failed = false;
   for (const ScenarioSource& source : options.scenarios) {
     try {
-      const Scenario scenario = source.text ? ScenarioLoader::loadText(*source.text, source.name)
-                                            : ScenarioLoader::loadFile(source.name);
-      Settings settings = scenario.settings;
-      if (options.timestep) settings.timestep = *options.timestep;
-      if (options.iterations) settings.iterations = *options.iterations;
-      if (options.duration) settings.duration = *options.duration;
-      std::unique_ptr<World> world = buildWorld(scenario, settings);
-      results.push_back(runScript(scenario, settings, *world));
+      Settings settings;
+      const Scenario scenario = loadScenario(source, options, settings);
+      std::unique_ptr<Simulation> simulation = buildSimulation(scenario, settings, options.mode);
+      results.push_back(runScript(scenario, settings, *simulation));
     } catch (const ScenarioError& e) {
       for (const std::string& line : e.lines()) err << line << "\n";
       failed = true;

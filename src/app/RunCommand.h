@@ -5,6 +5,10 @@
 #include <string>
 #include <vector>
 
+#include "core/SimulationMode.h"
+#include "core/Settings.h"
+#include "scenario/Scenario.h"
+
 namespace CLI {
 class App;
 }
@@ -28,13 +32,19 @@ struct ScenarioSource {
 struct RunOptions {
   std::vector<ScenarioSource> scenarios;
   bool json = false;
+  SimulationMode mode = SimulationMode::Bullet;
   std::optional<double> timestep;
   std::optional<int> iterations;
   std::optional<double> duration;
 };
 
-/// Declares run's options (all but the scenario list) on `command`.
-void addRunOptions(CLI::App& command, RunOptions& options);
+/// Declares run's options (all but the scenario list) on `command`; with
+/// `withMode`, also --mode.
+void addRunOptions(CLI::App& command, RunOptions& options, bool withMode = true);
+
+/// Reads a scenario and applies the command line's overrides to its
+/// settings. Throws ScenarioError.
+Scenario loadScenario(const ScenarioSource& source, const RunOptions& options, Settings& settings);
 
 /// Runs every scenario, then prints all outcomes to `out` (text, or JSON: an
 /// object for one scenario, an array for several). Problems go to `err`,

@@ -36,7 +36,7 @@ btQuaternion yawRotation(double degrees) {
 
 }  // namespace
 
-World::World(const Settings& settings, const TableSpec& table)
+World::World(const Settings& settings, const TableSpec& table, const Material& ground)
     : settings_(settings),
       configuration_(std::make_unique<btDefaultCollisionConfiguration>()),
       dispatcher_(std::make_unique<btCollisionDispatcher>(configuration_.get())),
@@ -44,7 +44,8 @@ World::World(const Settings& settings, const TableSpec& table)
       solver_(std::make_unique<btSequentialImpulseConstraintSolver>()),
       world_(std::make_unique<DynamicsWorld>(dispatcher_.get(), broadphase_.get(),
                                                        solver_.get(), configuration_.get())),
-      table_(table) {
+      table_(table),
+      ground_(ground) {
   // A box resting on the ground plane gets all its corner contacts in the
   // first step, not one more per step (which let it sink for a step).
   configuration_->setPlaneConvexMultipointIterations();
@@ -85,6 +86,41 @@ Shape& World::addEntity(std::unique_ptr<Shape> shape, double mass, const Materia
   entities_.push_back(std::move(shape));
   trackers_.emplace_back();
   return *entities_.back();
+}
+
+void World::makeKinematic(std::size_t i) {
+  btRigidBody* body = entities_.at(i)->body();
+  // Flags and mass change the body's broadphase group and solver role, so
+  // it leaves the world while they change.
+  world_->removeRigidBody(body);
+  body->setMassProps(0.0, btVector3(0, 0, 0));
+  body->setCollisionFlags(body->getCollisionFlags() | btCollisionObject::CF_KINEMATIC_OBJECT);
+  body->setLinearVelocity(btVector3(0, 0, 0));
+  body->setAngularVelocity(btVector3(0, 0, 0));
+  world_->addRigidBody(body);
+  body->setActivationState(DISABLE_DEACTIVATION);
+}
+
+void World::placeKinematic(std::size_t i, const btVector3& centre, double yawDegrees) {
+  btRigidBody* body = entities_.at(i)->body();
+  body->setWorldTransform(btTransform(yawRotation(yawDegrees), centre));
+}
+
+void World::makeDynamic(std::size_t i, const btVector3& velocity) {
+  Shape& shape = *entities_.at(i);
+  btRigidBody* body = shape.body();
+  world_->removeRigidBody(body);
+  body->setCollisionFlags(body->getCollisionFlags() & ~btCollisionObject::CF_KINEMATIC_OBJECT);
+  body->setMassProps(shape.mass(), shape.localInertia(shape.mass()));
+  body->updateInertiaTensor();
+  body->setInterpolationWorldTransform(body->getWorldTransform());
+  world_->addRigidBody(body);
+  if (!settings_.sleeping) body->setActivationState(DISABLE_DEACTIVATION);
+  body->setLinearVelocity(velocity);
+  body->setAngularVelocity(btVector3(0, 0, 0));
+  body->activate(true);
+  trackers_[i].atRest = false;
+  trackers_[i].quietSince = -1.0;
 }
 
 Shape* World::find(std::string_view name) {

@@ -32,7 +32,7 @@ namespace tabletop {
 /// states.
 class World : public Simulation {
  public:
-  World(const Settings& settings, const TableSpec& table);
+  World(const Settings& settings, const TableSpec& table, const Material& ground = kNeutralMaterial);
   ~World() override;
   World(const World&) = delete;
   World& operator=(const World&) = delete;
@@ -51,6 +51,18 @@ class World : public Simulation {
   /// Pairs of bodies ("table" for the table) that interpenetrate by more
   /// than `tolerance` metres in the current state.
   std::vector<std::pair<std::string, std::string>> overlaps(double tolerance);
+
+  /// Makes entity `i` kinematic: it keeps still, or goes where
+  /// placeKinematic() puts it, and pushes dynamic bodies out of its way
+  /// (the compat mode drives entities on the table this way).
+  void makeKinematic(std::size_t i);
+  /// Puts kinematic entity `i` with its centre at `centre`, turned by
+  /// `yawDegrees`; Bullet takes its velocity from the move.
+  void placeKinematic(std::size_t i, const btVector3& centre, double yawDegrees);
+  /// Makes kinematic entity `i` dynamic again, moving at `velocity` m/s.
+  void makeDynamic(std::size_t i, const btVector3& velocity);
+  /// True once entity `i` has been slow for the rest window (see observe()).
+  bool atRest(std::size_t i) const { return trackers_.at(i).atRest; }
 
   /// The impulse (N*s, along the arrow) a push of `magnitude` gives.
   double pushImpulse(const Arrow& arrow, const PushMagnitude& magnitude);

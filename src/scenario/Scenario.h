@@ -51,6 +51,7 @@ struct Scenario {
   std::string description;
   std::string file;  ///< where it was read from
   TableSpec table;
+  Material ground = kNeutralMaterial;  ///< the floor's material
   std::vector<EntitySpec> entities;
   Settings settings;
   std::vector<Action> script;

@@ -374,6 +374,11 @@ Scenario read(const json& root, std::vector<Problem>& problems) {
   s.description = f.has("description") ? f.string("description", "") : "";
   if (const json* t = f.get("table", false)) s.table = readTable(*t, problems);
   if (const json* st = f.get("settings", false)) s.settings = readSettings(*st, problems);
+  if (const json* g = f.get("ground", false)) {
+    Fields gf(*g, "/ground", problems);
+    s.ground = readMaterial(gf, "material", s.ground, problems);
+    gf.finish();
+  }
 
   if (const json* list = f.get("entities", true)) {
     if (!list->is_array() || list->empty()) {

@@ -2,11 +2,14 @@
 
 #include <map>
 
+#include "physics/CompatWorld.h"
 #include "physics/Cube.h"
 #include "physics/Cylinder.h"
 #include "physics/Seating.h"
 #include "physics/SolidBox.h"
 #include "physics/Sphere.h"
+#include "rules/ReportContactFinder.h"
+#include "rules/RuleEngine.h"
 #include "scenario/ScenarioError.h"
 
 namespace tabletop {
@@ -34,7 +37,7 @@ std::unique_ptr<Shape> makeShape(const EntitySpec& e) {
 }
 
 std::unique_ptr<World> buildWorld(const Scenario& scenario, const Settings& settings) {
-  auto world = std::make_unique<World>(settings, scenario.table);
+  auto world = std::make_unique<World>(settings, scenario.table, scenario.ground);
   std::map<std::string, std::size_t> indexOf;
   for (const EntitySpec& e : scenario.entities) {
     indexOf[e.name] = indexOf.size();
@@ -68,6 +71,51 @@ std::unique_ptr<World> buildWorld(const Scenario& scenario, const Settings& sett
                             (rank(other) >= 0 ? "'" + other + "'" : "the " + other)});
   }
   if (!problems.empty()) throw ScenarioError(scenario.file, std::move(problems));
+  return world;
+}
+
+std::vector<rules::RuleBody> buildRuleBodies(const Scenario& scenario) {
+  std::vector<rules::RuleBody> bodies;
+  std::map<std::string, int> indexOf;
+  for (const EntitySpec& e : scenario.entities) {
+    const std::unique_ptr<Shape> shape = makeShape(e);
+    rules::RuleBody b;
+    b.name = e.name;
+    b.shape = e.shape;
+    const btVector3 half = shape->halfExtents();
+    b.halfExtents = {half.x(), half.y(), half.z()};
+    b.below = shape->below();
+    b.above = shape->above();
+    b.position = e.position;
+    b.yawDegrees = e.yawDegrees;
+    b.support = rules::kOnNothing;
+    if (e.on == "table") {
+      b.position.y = scenario.table.height + b.below;
+      b.support = rules::kOnTable;
+    } else if (e.on == "ground") {
+      b.position.y = b.below;
+      b.support = rules::kOnGround;
+    } else if (!e.on.empty()) {
+      const int base = indexOf.at(e.on);
+      b.position.y = bodies[static_cast<std::size_t>(base)].top() + b.below;
+      b.support = base;
+    }
+    indexOf[e.name] = static_cast<int>(bodies.size());
+    bodies.push_back(b);
+  }
+  return bodies;
+}
+
+std::unique_ptr<Simulation> buildSimulation(const Scenario& scenario, const Settings& settings,
+                                            SimulationMode mode) {
+  std::unique_ptr<World> world = buildWorld(scenario, settings);
+  switch (mode) {
+    case SimulationMode::Bullet: return world;
+    case SimulationMode::Compat: return std::make_unique<CompatWorld>(std::move(world), buildRuleBodies(scenario));
+    case SimulationMode::Rules:
+      return std::make_unique<rules::RuleEngine>("rules", settings, scenario.table, buildRuleBodies(scenario),
+                                                 std::make_unique<rules::ReportContactFinder>());
+  }
   return world;
 }
 

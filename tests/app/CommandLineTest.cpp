@@ -8,6 +8,7 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 #include <nlohmann/json.hpp>
 
 namespace {
@@ -23,7 +24,8 @@ const std::string kScenarios = std::string(TABLETOP_SOURCE_DIR) + "/scenarios/";
 
 // Runs a shell command, capturing stdout, and stderr through a file.
 Outcome run(const std::string& command) {
-  const std::string errFile = ::testing::TempDir() + "tabletop_stderr.txt";
+  // One file per test process: CTest runs tests in parallel.
+  const std::string errFile = ::testing::TempDir() + "tabletop_stderr_" + std::to_string(getpid()) + ".txt";
   Outcome o;
   FILE* pipe = popen((command + " 2>" + errFile).c_str(), "r");
   if (!pipe) return o;

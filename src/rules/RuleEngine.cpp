@@ -1,0 +1,476 @@
+#include "rules/RuleEngine.h"
+
+#include <cmath>
+#include <functional>
+#include <stdexcept>
+
+#include "core/DirectionDef.h"
+
+namespace tabletop::rules {
+namespace {
+
+// Bodies whose vertical extents overlap by less than this do not meet
+// sideways: one rests on the other.
+constexpr double kLevelSlack = 1e-6;  // m
+// Events at one instant that keep causing each other mean a bug, not a scene.
+constexpr int kMaxEventsPerStep = 100000;
+
+bool isZero(const Vec3& v) { return v.x == 0.0 && v.y == 0.0 && v.z == 0.0; }
+
+Event eventAt(double t, EventType type, const std::string& entity) {
+  Event e;
+  e.t = t;
+  e.type = type;
+  e.entity = entity;
+  return e;
+}
+
+// The outward unit normal of the edge a status names.
+Vec3 edgeNormal(EntityPositionStatus s) {
+  switch (s) {
+    case EntityPositionStatus::DropFromRightEdge: return {1, 0, 0};
+    case EntityPositionStatus::DropFromLeftEdge: return {-1, 0, 0};
+    case EntityPositionStatus::DropFromFrontEdge: return {0, 0, 1};
+    case EntityPositionStatus::DropFromBackEdge: return {0, 0, -1};
+    default: return {};
+  }
+}
+
+}  // namespace
+
+RuleEngine::RuleEngine(std::string mode, const Settings& settings, const TableSpec& table,
+                       std::vector<RuleBody> bodies, std::unique_ptr<ContactFinder> finder,
+                       ReleaseHandler* release)
+    : mode_(std::move(mode)),
+      settings_(settings),
+      tableTop_(table.height),
+      edges_{table.centreX - 0.5 * table.width, table.centreX + 0.5 * table.width,
+             table.centreZ - 0.5 * table.depth, table.centreZ + 0.5 * table.depth},
+      bodies_(std::move(bodies)),
+      motion_(bodies_.size()),
+      finder_(std::move(finder)),
+      release_(release) {}
+
+std::size_t RuleEngine::index(const std::string& name) const {
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    if (bodies_[i].name == name) return i;
+  }
+  throw std::invalid_argument("no entity named '" + name + "'");
+}
+
+bool RuleEngine::onSurface(std::size_t i) const {
+  return motion_[i].phase == Phase::Resting || motion_[i].phase == Phase::Driven;
+}
+
+Vec3 RuleEngine::ownVelocity(std::size_t i) const {
+  const Motion& m = motion_[i];
+  switch (m.phase) {
+    case Phase::Driven:
+    case Phase::Clearing: return m.direction * kDriveSpeed;
+    case Phase::Falling: return {0.0, -m.fallSpeed, 0.0};
+    default: return {};
+  }
+}
+
+Vec3 RuleEngine::velocity(std::size_t i) const {
+  if (motion_[i].phase == Phase::Released) return {};
+  const int s = bodies_[i].support;
+  return s >= 0 ? ownVelocity(i) + velocity(static_cast<std::size_t>(s)) : ownVelocity(i);
+}
+
+std::vector<std::size_t> RuleEngine::riders(std::size_t i) const {
+  std::vector<std::size_t> out;
+  for (std::size_t k = 0; k < bodies_.size(); ++k) {
+    if (bodies_[k].support == static_cast<int>(i) && motion_[k].phase != Phase::Released) {
+      out.push_back(k);
+      for (std::size_t r : riders(k)) out.push_back(r);
+    }
+  }
+  return out;
+}
+
+// The body whose own push moves `i`: itself, or what carries it.
+std::size_t RuleEngine::driver(std::size_t i) const {
+  const Phase p = motion_[i].phase;
+  if (p == Phase::Driven || p == Phase::Clearing) return i;
+  const int s = bodies_[i].support;
+  return s >= 0 ? driver(static_cast<std::size_t>(s)) : i;
+}
+
+RuleEngine::Next RuleEngine::nextEvent(double horizon) const {
+  Next best;
+  best.t = horizon;
+  const auto consider = [&best](Next candidate) {
+    if (candidate.t < best.t) best = candidate;
+  };
+  const auto make = [](Next::Kind kind, double t, std::size_t body) {
+    Next e;
+    e.kind = kind;
+    e.t = t;
+    e.body = body;
+    return e;
+  };
+  const std::size_t n = bodies_.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Motion& m = motion_[i];
+    const RuleBody& b = bodies_[i];
+    if (m.phase == Phase::Driven || m.phase == Phase::Clearing) {
+      consider(make(Next::Kind::DriveEnds, m.remaining / kDriveSpeed, i));
+    }
+    if (m.phase == Phase::Falling) {
+      const double drop = b.position.y - m.landingY;
+      const double g = settings_.gravity;
+      const double t = drop <= 0.0 ? 0.0 : (std::sqrt(m.fallSpeed * m.fallSpeed + 2.0 * g * drop) - m.fallSpeed) / g;
+      consider(make(Next::Kind::Lands, t, i));
+    }
+    if (m.phase != Phase::Driven) continue;
+    const Vec3 v = ownVelocity(i);
+    if (b.support == kOnTable) {
+      // Report 3.4: the centre reaching an edge while moving out.
+      const auto edge = [&](double coord, double speed, double limit, EntityPositionStatus s) {
+        if (speed == 0.0) return;
+        const double t = (limit - coord) / speed;
+        if (t >= 0.0) {
+          Next e = make(Next::Kind::TableEdge, t, i);
+          e.edge = s;
+          consider(e);
+        }
+      };
+      if (v.x > 0.0) edge(b.position.x, v.x, edges_.xRight, EntityPositionStatus::DropFromRightEdge);
+      if (v.x < 0.0) edge(b.position.x, v.x, edges_.xLeft, EntityPositionStatus::DropFromLeftEdge);
+      if (v.z > 0.0) edge(b.position.z, v.z, edges_.zFront, EntityPositionStatus::DropFromFrontEdge);
+      if (v.z < 0.0) edge(b.position.z, v.z, edges_.zBack, EntityPositionStatus::DropFromBackEdge);
+    } else if (b.support >= 0) {
+      // Report 3.7: a pushed upper entity slides until its centre passes
+      // the lower one's edge.
+      const RuleBody& base = bodies_[static_cast<std::size_t>(b.support)];
+      const double rx = b.position.x - base.position.x, rz = b.position.z - base.position.z;
+      double t = horizon;
+      if (v.x > 0.0) t = std::min(t, (base.footX() - rx) / v.x);
+      if (v.x < 0.0) t = std::min(t, (-base.footX() - rx) / v.x);
+      if (v.z > 0.0) t = std::min(t, (base.footZ() - rz) / v.z);
+      if (v.z < 0.0) t = std::min(t, (-base.footZ() - rz) / v.z);
+      consider(make(Next::Kind::BaseEdge, std::max(t, 0.0), i));
+    }
+  }
+  // Strikes between bodies on a surface at the same level.
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!onSurface(i)) continue;
+    for (std::size_t j = i + 1; j < n; ++j) {
+      if (!onSurface(j)) continue;
+      const RuleBody& a = bodies_[i];
+      const RuleBody& b = bodies_[j];
+      if (a.bottom() >= b.top() - kLevelSlack || b.bottom() >= a.top() - kLevelSlack) continue;
+      const Vec3 vi = velocity(i), vj = velocity(j);
+      const Vec3 relative = vi - vj;
+      if (isZero(relative)) continue;
+      const std::optional<Hit> hit = finder_->firstHit(i, a, j, b, relative * best.t);
+      if (!hit) continue;
+      const double t = hit->fraction * best.t;
+      // The striker is the one running into the other faster.
+      const bool iStrikes = vi.dot(hit->normal) >= -vj.dot(hit->normal);
+      Next e = make(Next::Kind::Strike, t, iStrikes ? i : j);
+      e.other = iStrikes ? j : i;
+      e.normal = iStrikes ? hit->normal : hit->normal * -1.0;
+      consider(e);
+    }
+  }
+  return best;
+}
+
+void RuleEngine::advance(double dt) {
+  if (dt <= 0.0) return;
+  const std::size_t n = bodies_.size();
+  // Own displacements first (they change the motion), then add what each
+  // body's support moved.
+  std::vector<Vec3> own(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    Motion& m = motion_[i];
+    switch (m.phase) {
+      case Phase::Driven:
+      case Phase::Clearing: {
+        const double d = std::min(m.remaining, kDriveSpeed * dt);
+        own[i] = m.direction * d;
+        m.remaining -= d;
+        break;
+      }
+      case Phase::Falling: {
+        own[i] = {0.0, -(m.fallSpeed * dt + 0.5 * settings_.gravity * dt * dt), 0.0};
+        m.fallSpeed += settings_.gravity * dt;
+        break;
+      }
+      default: break;
+    }
+  }
+  std::vector<Vec3> total(n);
+  std::vector<bool> done(n, false);
+  const std::function<Vec3(std::size_t)> moved = [&](std::size_t i) -> Vec3 {
+    if (done[i]) return total[i];
+    const int s = bodies_[i].support;
+    total[i] = (s >= 0 && motion_[i].phase != Phase::Released) ? own[i] + moved(static_cast<std::size_t>(s))
+                                                               : own[i];
+    done[i] = true;
+    return total[i];
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    if (motion_[i].phase != Phase::Released) bodies_[i].position = bodies_[i].position + moved(i);
+  }
+}
+
+void RuleEngine::handle(const Next& next) {
+  const std::size_t i = next.body;
+  switch (next.kind) {
+    case Next::Kind::None: break;
+    case Next::Kind::DriveEnds:
+      motion_[i].remaining = 0.0;
+      if (motion_[i].phase == Phase::Clearing) {
+        startFall(i);
+      } else {
+        motion_[i].phase = Phase::Resting;
+      }
+      break;
+    case Next::Kind::Strike: {
+      Event e = eventAt(now_, EventType::ContactBegin, bodies_[i].name);
+      e.other = bodies_[next.other].name;
+      record(e);
+      strike(i, next.other, next.normal);
+      break;
+    }
+    case Next::Kind::TableEdge: leaveTable(i, next.edge); break;
+    case Next::Kind::BaseEdge: {
+      const EntityPositionStatus past = dropStatus(bodies_[i].position, edges_);
+      if (past != EntityPositionStatus::OnTable) {
+        leaveTable(i, past);
+        break;
+      }
+      // Which of the base's edges: the direction of the rider's offset.
+      const RuleBody& base = bodies_[static_cast<std::size_t>(bodies_[i].support)];
+      const double rx = (bodies_[i].position.x - base.position.x) / base.footX();
+      const double rz = (bodies_[i].position.z - base.position.z) / base.footZ();
+      const Vec3 outward = std::abs(rx) >= std::abs(rz) ? Vec3{rx > 0 ? 1.0 : -1.0, 0, 0}
+                                                          : Vec3{0, 0, rz > 0 ? 1.0 : -1.0};
+      startClearing(i, outward);
+      break;
+    }
+    case Next::Kind::Lands: land(i); break;
+  }
+}
+
+void RuleEngine::strike(std::size_t striker, std::size_t struck, const Vec3& n) {
+  const std::size_t d = driver(striker);
+  const Motion& push = motion_[d];
+  Motion& target = motion_[struck];
+  const bool spheres = bodies_[striker].shape == ShapeKind::Sphere &&
+                       bodies_[struck].shape == ShapeKind::Sphere && d == striker;
+  if (!spheres) {
+    // Straight-line transfer: the push goes on through the struck body's
+    // centre, same direction, same remaining distance.
+    target.phase = Phase::Driven;
+    target.direction = push.direction;
+    target.remaining = push.remaining;
+    return;
+  }
+  // Two spheres: see the class comment.
+  Motion& own = motion_[striker];
+  const double cosine = std::max(0.0, own.direction.dot(n));
+  const double remaining = own.remaining;
+  const double step1 = remaining * cosine * cosine;
+  const Vec3 rest = own.direction - n * cosine;
+  const double restLength = rest.length();
+  target.phase = Phase::Driven;
+  target.direction = n;
+  target.remaining = step1;
+  own.remaining = restLength > 0.0 ? std::min(remaining * (1.0 - cosine * cosine), step1) : 0.0;
+  if (restLength > 0.0) own.direction = rest * (1.0 / restLength);
+}
+
+void RuleEngine::leaveTable(std::size_t i, EntityPositionStatus status) {
+  std::vector<std::size_t> group{i};
+  for (std::size_t r : riders(i)) group.push_back(r);
+  for (std::size_t k : group) {
+    bodies_[k].status = status;
+    Event e = eventAt(now_, EventType::LeavesTable, bodies_[k].name);
+    e.edge = std::string(edgeName(status));
+    record(e);
+  }
+  if (release_) {
+    std::vector<Vec3> velocities;
+    for (std::size_t k : group) velocities.push_back(velocity(k));
+    for (std::size_t k : group) motion_[k].phase = Phase::Released;
+    for (std::size_t g = 0; g < group.size(); ++g) release_->release(group[g], velocities[g]);
+    return;
+  }
+  startClearing(i, edgeNormal(status));
+}
+
+// Moves on along the body's own direction (or straight out, when it was
+// carried there) until its footprint is past the edge whose outward normal
+// is `outward`.
+void RuleEngine::startClearing(std::size_t i, const Vec3& outward) {
+  Motion& m = motion_[i];
+  const RuleBody& b = bodies_[i];
+  const double half = std::abs(outward.x) > 0.0 ? b.footX() : b.footZ();
+  if (m.phase != Phase::Driven || m.direction.dot(outward) <= 0.0) m.direction = outward;
+  m.phase = Phase::Clearing;
+  m.remaining = half / m.direction.dot(outward);
+}
+
+void RuleEngine::startFall(std::size_t i) {
+  RuleBody& b = bodies_[i];
+  Motion& m = motion_[i];
+  std::vector<bool> carried(bodies_.size(), false);
+  for (std::size_t r : riders(i)) carried[r] = true;
+  // The highest surface below the centre: the table, a body, or the ground.
+  double surface = 0.0;
+  int on = kOnGround;
+  const Vec3& c = b.position;
+  if (dropStatus(c, edges_) == EntityPositionStatus::OnTable && b.bottom() >= tableTop_ - kLevelSlack) {
+    surface = tableTop_;
+    on = kOnTable;
+  }
+  for (std::size_t k = 0; k < bodies_.size(); ++k) {
+    if (k == i || carried[k] || !onSurface(k)) continue;
+    const RuleBody& o = bodies_[k];
+    const double dx = c.x - o.position.x, dz = c.z - o.position.z;
+    const bool under = o.round() ? std::hypot(dx, dz) <= o.footX()
+                                 : std::abs(dx) <= o.footX() && std::abs(dz) <= o.footZ();
+    if (under && o.top() <= b.bottom() + kLevelSlack && o.top() > surface) {
+      surface = o.top();
+      on = static_cast<int>(k);
+    }
+  }
+  m.phase = Phase::Falling;
+  m.fallSpeed = 0.0;
+  m.landingY = surface + b.below;
+  m.landingOn = on;
+  b.support = kOnNothing;
+}
+
+void RuleEngine::land(std::size_t i) {
+  RuleBody& b = bodies_[i];
+  Motion& m = motion_[i];
+  const double shift = m.landingY - b.position.y;
+  b.position.y = m.landingY;
+  for (std::size_t r : riders(i)) bodies_[r].position.y += shift;
+  m.phase = Phase::Resting;
+  m.fallSpeed = 0.0;
+  b.support = m.landingOn;
+  if (m.landingOn == kOnGround || isDropping(b.status)) b.status = EntityPositionStatus::FinishDropSimulation;
+  for (std::size_t r : riders(i)) {
+    if (isDropping(bodies_[r].status)) bodies_[r].status = EntityPositionStatus::FinishDropSimulation;
+  }
+  Event e = eventAt(now_, EventType::Lands, b.name);
+  e.on = m.landingOn == kOnGround  ? "ground"
+         : m.landingOn == kOnTable ? "table"
+                                   : bodies_[static_cast<std::size_t>(m.landingOn)].name;
+  record(e);
+}
+
+bool RuleEngine::moving(std::size_t i) const {
+  const Phase p = motion_[i].phase;
+  if (p == Phase::Released) return false;
+  if (p == Phase::Driven || p == Phase::Clearing || p == Phase::Falling) return true;
+  const int s = bodies_[i].support;
+  return s >= 0 && moving(static_cast<std::size_t>(s));
+}
+
+void RuleEngine::noteRest() {
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    if (motion_[i].phase == Phase::Released) continue;
+    const bool moving = this->moving(i);
+    if (motion_[i].moving && !moving) record(eventAt(now_, EventType::AtRest, bodies_[i].name));
+    motion_[i].moving = moving;
+  }
+}
+
+void RuleEngine::record(Event e) { events_.push_back(std::move(e)); }
+
+void RuleEngine::push(const Arrow& arrow, const PushMagnitude& magnitude) {
+  const std::size_t i = index(arrow.entity);
+  RuleBody& b = bodies_[i];
+  Motion& m = motion_[i];
+  if (magnitude.kind != PushMagnitude::Kind::Step) {
+    throw std::invalid_argument("the report's rules move entities by steps: give the push a 'step' in metres");
+  }
+  if (m.phase == Phase::Released || m.phase == Phase::Clearing || m.phase == Phase::Falling ||
+      b.support == kOnGround || b.status != EntityPositionStatus::OnTable) {
+    throw std::invalid_argument("'" + b.name + "' is " + std::string(toString(b.status)) +
+                                (b.support == kOnGround ? " on the ground" : "") +
+                                ": the report's rules push only entities on the table");
+  }
+  if (m.phase == Phase::Driven) {
+    throw std::invalid_argument("'" + b.name + "' is still moving from an earlier push; wait for rest first");
+  }
+  const double angle = arrow.worldAngleDegrees(b.round() ? 0.0 : b.yawDegrees);
+  m.phase = Phase::Driven;
+  m.direction = pushDirection(angle);
+  m.remaining = magnitude.value;
+
+  Event e = eventAt(now_, EventType::Push, b.name);
+  if (arrow.face) e.direction = std::string(toString(*arrow.face));
+  e.angle = angle;
+  e.step = magnitude.value;
+  record(e);
+  noteRest();
+}
+
+void RuleEngine::rotate(const std::string& entity, double degrees) {
+  const std::size_t i = index(entity);
+  bodies_[i].yawDegrees += degrees;
+  Event e = eventAt(now_, EventType::Rotate, entity);
+  e.angle = degrees;
+  record(e);
+}
+
+void RuleEngine::step() {
+  const double dt = settings_.timestep;
+  double left = dt;
+  for (int count = 0;; ++count) {
+    if (count > kMaxEventsPerStep) {
+      throw std::logic_error("rule engine: events keep causing each other at t = " + std::to_string(now_));
+    }
+    const Next next = nextEvent(left);
+    advance(next.t);
+    left -= next.t;
+    now_ = time_ + (dt - left);
+    if (next.kind == Next::Kind::None) break;
+    handle(next);
+    noteRest();
+  }
+  ++steps_;
+  time_ = static_cast<double>(steps_) * dt;
+  now_ = time_;
+  noteRest();
+}
+
+bool RuleEngine::allAtRest() const {
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    if (moving(i)) return false;
+  }
+  return true;
+}
+
+std::vector<EntityState> RuleEngine::snapshot() const {
+  std::vector<EntityState> out;
+  out.reserve(bodies_.size());
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    const RuleBody& b = bodies_[i];
+    EntityState s;
+    s.name = b.name;
+    s.shape = b.shape;
+    s.position = b.position;
+    const double half = 0.5 * convertAngle(b.yawDegrees);
+    s.orientation = {std::cos(half), 0.0, std::sin(half), 0.0};
+    s.yawDegrees = b.yawDegrees;
+    s.linearVelocity = velocity(i);
+    s.status = b.status;
+    s.support = b.support == kOnTable    ? "table"
+                : b.support == kOnGround ? "ground"
+                : b.support == kOnNothing ? "none"
+                                          : bodies_[static_cast<std::size_t>(b.support)].name;
+    out.push_back(s);
+  }
+  return out;
+}
+
+}  // namespace tabletop::rules
