@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/CompareCommand.h"
 #include "app/RunCommand.h"
 
 int main(int argc, char** argv) {
@@ -24,6 +25,18 @@ int main(int argc, char** argv) {
   runCommand->callback([&] {
     for (const std::string& f : files) run.scenarios.push_back({f, std::nullopt});
     status = runScenarios(run, std::cout, std::cerr);
+  });
+
+  CompareOptions compare;
+  std::string compareFile;
+  CLI::App* compareCommand = app.add_subcommand(
+      "compare", "Run a scenario in the rules, compat and bullet modes and say where and why they differ");
+  compareCommand->add_option("SCENARIO", compareFile, "Scenario file (JSON)")->required();
+  addRunOptions(*compareCommand, compare.run, false);
+  compareCommand->add_option("--plot", compare.plot, "Write a top view of the trajectories (FILE.png or FILE.svg)");
+  compareCommand->callback([&] {
+    compare.run.scenarios.push_back({compareFile, std::nullopt});
+    status = compareScenario(compare, std::cout, std::cerr);
   });
 
   try {

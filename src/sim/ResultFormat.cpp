@@ -24,7 +24,7 @@ nlohmann::json eventJson(const Event& e) {
     case EventType::Push:
       if (!e.direction.empty()) j["direction"] = e.direction;
       j["angle"] = e.angle;
-      j["impulse"] = e.impulse;
+      if (e.impulse > 0) j["impulse"] = e.impulse;  // the rules push by steps, not impulses
       if (e.step > 0) j["step"] = e.step;
       break;
     case EventType::Rotate: j["angle"] = e.angle; break;
@@ -43,7 +43,7 @@ std::string describe(const Event& e) {
       std::string s = "push " + e.entity + " " +
                       (e.direction.empty() ? "at " + fixed(e.angle, 1) + " deg" : e.direction);
       if (e.step > 0) s += ", step " + fixed(e.step, 3) + " m";
-      return s + " (impulse " + fixed(e.impulse, 4) + " N s)";
+      return e.impulse > 0 ? s + " (impulse " + fixed(e.impulse, 4) + " N s)" : s;
     }
     case EventType::Rotate: return "rotate " + e.entity + " by " + fixed(e.angle, 1) + " deg";
     case EventType::ContactBegin: return "contact begins between " + e.entity + " and " + e.other;

@@ -14,26 +14,34 @@ constexpr double kTimeSlack = 1e-9;
 
 class Stepper {
  public:
-  Stepper(Simulation& sim, double duration) : sim_(sim), duration_(duration) {}
+  Stepper(Simulation& sim, double duration, const StepObserver& observer)
+      : sim_(sim), duration_(duration), observer_(observer) {}
 
   bool canStep() const { return sim_.time() < duration_ - kTimeSlack; }
   void until(double t) {
-    while (sim_.time() < t - kTimeSlack && canStep()) sim_.step();
+    while (sim_.time() < t - kTimeSlack && canStep()) advance();
   }
   void untilRest(double deadline) {
-    while (!sim_.allAtRest() && sim_.time() < deadline - kTimeSlack && canStep()) sim_.step();
+    while (!sim_.allAtRest() && sim_.time() < deadline - kTimeSlack && canStep()) advance();
   }
 
  private:
+  void advance() {
+    sim_.step();
+    if (observer_) observer_(sim_);
+  }
+
   Simulation& sim_;
   double duration_;
+  const StepObserver& observer_;
 };
 
 }  // namespace
 
-RunResult runScript(const Scenario& scenario, const Settings& settings, Simulation& sim) {
+RunResult runScript(const Scenario& scenario, const Settings& settings, Simulation& sim,
+                    const StepObserver& afterStep) {
   const auto start = std::chrono::steady_clock::now();
-  Stepper stepper(sim, settings.duration);
+  Stepper stepper(sim, settings.duration, afterStep);
 
   for (const Action& action : scenario.script) {
     if (action.at) stepper.until(*action.at);

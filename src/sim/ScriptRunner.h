@@ -1,5 +1,7 @@
 #pragma once
 
+#include <functional>
+
 #include "core/RunResult.h"
 #include "core/Simulation.h"
 #include "scenario/Scenario.h"
@@ -14,6 +16,11 @@ namespace tabletop {
 /// "wait": "rest" steps until nothing moves (or its timeout); "wait": S
 /// steps S seconds. Nothing runs past settings.duration. An action the mode
 /// cannot carry out throws a ScenarioError naming the action.
-RunResult runScript(const Scenario& scenario, const Settings& settings, Simulation& simulation);
+///
+/// `afterStep`, when given, sees the simulation after every step (the
+/// comparison records trajectories with it).
+using StepObserver = std::function<void(const Simulation&)>;
+RunResult runScript(const Scenario& scenario, const Settings& settings, Simulation& simulation,
+                    const StepObserver& afterStep = {});
 
 }  // namespace tabletop

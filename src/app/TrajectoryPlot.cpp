@@ -1,0 +1,115 @@
+#include "app/TrajectoryPlot.h"
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+namespace tabletop {
+namespace {
+
+// One colour and dash per mode, like kAllModes: rules, compat, bullet.
+constexpr const char* kModeStyle[3] = {"lc rgb '#000000' dt 2 lw 1.5", "lc rgb '#1f5fd0' lw 4",
+                                       "lc rgb '#d03020' lw 2"};
+
+std::string quoted(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) out += c == '\'' ? std::string("''") : std::string(1, c);
+  return out + "'";
+}
+
+bool endsWith(const std::string& s, const std::string& suffix) {
+  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+}  // namespace
+
+std::string writeTrajectoryPlot(const Comparison& c, const TableSpec& table, const std::string& path) {
+  std::string terminal;
+  if (endsWith(path, ".png")) {
+    terminal = "pngcairo size 1000,760 font 'sans,10'";
+  } else if (endsWith(path, ".svg")) {
+    terminal = "svg size 1000,760 font 'sans,10'";
+  } else {
+    return "--plot: expected a file name ending in .png or .svg, got '" + path + "'";
+  }
+  const std::string temporary = path + ".part";
+
+  std::ostringstream g;
+  g << "set terminal " << terminal << "\n";
+  g << "set output " << quoted(temporary) << "\n";
+  g << "set title " << quoted(c.scenario + ": top view, rules (dashed), compat, bullet") << " noenhanced\n";
+  g << "set xlabel 'x [m]'\nset ylabel 'z [m] (towards the viewer, down the page)'\n";
+  const double x0 = table.centreX - 0.5 * table.width, x1 = table.centreX + 0.5 * table.width;
+  const double z0 = table.centreZ - 0.5 * table.depth, z1 = table.centreZ + 0.5 * table.depth;
+  // The view holds the table and every path, with a margin.
+  double lo[2] = {x0, z0}, hi[2] = {x1, z1};
+  for (const EntityComparison& e : c.entities) {
+    for (const ModeOutcome& o : e.modes) {
+      for (const Vec3& p : o.trajectory.points) {
+        lo[0] = std::min(lo[0], p.x), hi[0] = std::max(hi[0], p.x);
+        lo[1] = std::min(lo[1], p.z), hi[1] = std::max(hi[1], p.z);
+      }
+    }
+  }
+  const double margin = 0.05 * std::max(hi[0] - lo[0], hi[1] - lo[1]);
+  g << "set size ratio -1\nset grid\nset key below noenhanced\n";
+  g << "set xrange [" << lo[0] - margin << ":" << hi[0] + margin << "]\n";
+  g << "set yrange [" << hi[1] + margin << ":" << lo[1] - margin << "]\n";  // +z down the page
+  g << "set object 1 rect from " << x0 << "," << z0 << " to " << x1 << "," << z1
+    << " fc rgb '#e8d8c0' fs solid 0.5 border lc rgb '#966432' behind\n";
+  // Inline data blocks: one per entity and mode.
+  int block = 0;
+  for (const EntityComparison& e : c.entities) {
+    for (std::size_t m = 0; m < 3; ++m) {
+      g << "$d" << block++ << " << EOD\n";
+      for (const Vec3& p : e.modes[m].trajectory.points) g << p.x << " " << p.z << "\n";
+      g << "EOD\n";
+    }
+  }
+  int label = 2;
+  for (const EntityComparison& e : c.entities) {
+    g << "set label " << label++ << " " << quoted(e.name) << " at " << e.start.x << "," << e.start.z
+      << " offset 0.5,0.5 noenhanced\n";
+  }
+  // Bullet first, the rules last, so the dashed reference stays on top.
+  g << "plot ";
+  bool first = true;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const std::size_t m = 2 - k;
+    for (std::size_t i = 0; i < c.entities.size(); ++i) {
+      const EntityComparison& e = c.entities[i];
+      const std::string title = e.name + " " + std::string(toString(kAllModes[m])) + ": " + e.modes[m].verdict;
+      g << (first ? "" : ", \\\n     ") << "$d" << 3 * i + m << " with lines " << kModeStyle[m] << " title "
+        << quoted(title);
+      first = false;
+    }
+  }
+  g << "\nunset output\n";
+
+  FILE* pipe = popen("gnuplot 2>/dev/null", "w");
+  if (!pipe) return "--plot: could not start gnuplot";
+  const std::string script = g.str();
+  std::fwrite(script.data(), 1, script.size(), pipe);
+  const int status = pclose(pipe);
+  std::error_code ignored;
+  if (!WIFEXITED(status) || WEXITSTATUS(status) == 127) {
+    std::filesystem::remove(temporary, ignored);
+    return "--plot needs gnuplot (Debian package gnuplot-nox), which is not installed";
+  }
+  if (WEXITSTATUS(status) != 0 || !std::filesystem::exists(temporary)) {
+    std::filesystem::remove(temporary, ignored);
+    return "--plot: gnuplot failed to write '" + path + "'";
+  }
+  std::error_code error;
+  std::filesystem::rename(temporary, path, error);
+  if (error) {
+    std::filesystem::remove(temporary, ignored);
+    return "--plot: cannot write '" + path + "': " + error.message();
+  }
+  return {};
+}
+
+}  // namespace tabletop

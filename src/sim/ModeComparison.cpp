@@ -1,0 +1,170 @@
+#include "sim/ModeComparison.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "core/Angle.h"
+#include "sim/SceneBuilder.h"
+#include "sim/ScriptRunner.h"
+
+namespace tabletop {
+namespace {
+
+// Trajectories keep a point every this many simulated seconds.
+constexpr double kSampleInterval = 1.0 / 120.0;
+// A yaw difference beyond this is a rotation, degrees.
+constexpr double kRotatedDegrees = 2.0;
+// An up axis tilted more than this is tipped, degrees.
+constexpr double kTippedDegrees = 10.0;
+
+bool offTable(const EntityState& s) { return s.status != EntityPositionStatus::OnTable; }
+
+// The cosine of the tilt of the body's up axis from +Y.
+double upright(const std::array<double, 4>& q) {
+  const double x = q[1], z = q[3];
+  return 1.0 - 2.0 * (x * x + z * z);
+}
+
+double yawDifference(double a, double b) {
+  double d = std::fmod(a - b, 360.0);
+  if (d > 180.0) d -= 360.0;
+  if (d < -180.0) d += 360.0;
+  return std::abs(d);
+}
+
+std::string firstEdge(const RunResult& run, const std::string& entity) {
+  for (const Event& e : run.events) {
+    if (e.type == EventType::LeavesTable && e.entity == entity) return e.edge;
+  }
+  return {};
+}
+
+std::string fixed(double v, int digits) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.*f", digits, v);
+  return buffer;
+}
+
+std::string padded(const std::string& s, std::size_t width) {
+  return s.size() >= width ? s + " " : s + std::string(width - s.size(), ' ');
+}
+
+}  // namespace
+
+std::string verdict(const Vec3& start, const ModeOutcome& rules, const ModeOutcome& other) {
+  const EntityState& r = rules.state;
+  const EntityState& o = other.state;
+  const auto diverges = [](const char* reason) { return std::string("diverges: ") + reason; };
+  if (offTable(r) != offTable(o)) return diverges(offTable(o) ? "slid off" : "stayed behind");
+  if (offTable(r)) return rules.edge == other.edge ? "agrees" : diverges("dropped from another edge");
+  // A sphere's orientation is no outcome: it rolls.
+  if (o.shape != ShapeKind::Sphere) {
+    if (upright(o.orientation) < std::cos(convertAngle(kTippedDegrees))) return diverges("tipped");
+    if (yawDifference(o.yawDegrees, r.yawDegrees) > kRotatedDegrees) return diverges("rotated");
+  }
+  if (other.fromRules <= kAgreeDistance) return "agrees";
+  const Vec3 ruleMove = r.position - start;
+  const Vec3 move = o.position - start;
+  const double ruleLength = std::hypot(ruleMove.x, ruleMove.z);
+  if (ruleLength > kAgreeDistance) {
+    const Vec3 along = ruleMove * (1.0 / ruleLength);
+    const double ahead = move.x * along.x + move.z * along.z;
+    const double side = std::abs(move.x * along.z - move.z * along.x);
+    if (ahead < -kAgreeDistance) return diverges("bounced back");
+    if (side > std::abs(ahead - ruleLength)) return diverges("went sideways");
+    return diverges(ahead < ruleLength ? "stopped short" : "went further");
+  }
+  return diverges("went sideways");
+}
+
+Comparison compareModes(const Scenario& scenario, const Settings& settings) {
+  Comparison c;
+  c.scenario = scenario.name;
+  c.file = scenario.file;
+  const std::size_t n = scenario.entities.size();
+  std::array<std::vector<Trajectory>, 3> paths;
+  for (std::size_t m = 0; m < 3; ++m) {
+    std::unique_ptr<Simulation> sim = buildSimulation(scenario, settings, kAllModes[m]);
+    paths[m].resize(n);
+    const auto record = [&paths, m](const Simulation& s) {
+      const std::vector<EntityState> states = s.snapshot();
+      for (std::size_t i = 0; i < states.size(); ++i) paths[m][i].points.push_back(states[i].position);
+    };
+    record(*sim);
+    double next = kSampleInterval;
+    c.runs[m] = runScript(scenario, settings, *sim, [&](const Simulation& s) {
+      if (s.time() + 1e-12 < next) return;
+      next += kSampleInterval;
+      record(s);
+    });
+    record(*sim);
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    EntityComparison e;
+    e.name = scenario.entities[i].name;
+    e.start = paths[0][i].points.front();
+    for (std::size_t m = 0; m < 3; ++m) {
+      ModeOutcome& out = e.modes[m];
+      out.state = c.runs[m].entities[i];
+      out.edge = firstEdge(c.runs[m], e.name);
+      out.trajectory = std::move(paths[m][i]);
+      out.fromRules = (out.state.position - c.runs[0].entities[i].position).length();
+    }
+    e.modes[0].verdict = "reference";
+    for (std::size_t m = 1; m < 3; ++m) e.modes[m].verdict = verdict(e.start, e.modes[0], e.modes[m]);
+    c.entities.push_back(std::move(e));
+  }
+  return c;
+}
+
+std::string formatComparison(const Comparison& c) {
+  std::string s = c.scenario + "  (" + c.file + ")\n";
+  s += "  rules, compat and bullet; distances from the rules' final centre; on-table centres within " +
+       fixed(kAgreeDistance * 1000.0, 1) + " mm agree\n";
+  std::size_t width = 8;
+  for (const EntityComparison& e : c.entities) width = std::max(width, e.name.size() + 2);
+  s += "  " + padded("entity", width) + padded("mode", 8) + padded("x [m]", 9) + padded("y [m]", 9) +
+       padded("z [m]", 9) + padded("yaw [deg]", 10) + padded("status", 22) + padded("from rules [m]", 16) +
+       "verdict\n";
+  for (const EntityComparison& e : c.entities) {
+    for (std::size_t m = 0; m < 3; ++m) {
+      const ModeOutcome& o = e.modes[m];
+      const Vec3& p = o.state.position;
+      s += "  " + padded(m == 0 ? e.name : "", width) + padded(std::string(toString(kAllModes[m])), 8) +
+           padded(fixed(p.x, 4), 9) + padded(fixed(p.y, 4), 9) + padded(fixed(p.z, 4), 9) +
+           padded(fixed(o.state.yawDegrees, 1), 10) + padded(std::string(toString(o.state.status)), 22) +
+           padded(m == 0 ? "" : fixed(o.fromRules, 4), 16) + o.verdict + "\n";
+    }
+  }
+  return s;
+}
+
+nlohmann::json comparisonJson(const Comparison& c) {
+  nlohmann::json entities = nlohmann::json::array();
+  for (const EntityComparison& e : c.entities) {
+    nlohmann::json j{{"name", e.name}, {"start", {e.start.x, e.start.y, e.start.z}}};
+    for (std::size_t m = 0; m < 3; ++m) {
+      const ModeOutcome& o = e.modes[m];
+      const Vec3& p = o.state.position;
+      nlohmann::json mode{{"position", {p.x, p.y, p.z}},
+                          {"yaw", o.state.yawDegrees},
+                          {"status", toString(o.state.status)},
+                          {"support", o.state.support},
+                          {"verdict", o.verdict}};
+      if (!o.edge.empty()) mode["edge"] = o.edge;
+      if (m > 0) mode["distance_from_rules"] = o.fromRules;
+      j[std::string(toString(kAllModes[m]))] = mode;
+    }
+    entities.push_back(j);
+  }
+  nlohmann::json hashes;
+  for (std::size_t m = 0; m < 3; ++m) {
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(c.runs[m].stateHash));
+    hashes[std::string(toString(kAllModes[m]))] = hex;
+  }
+  return {{"scenario", c.scenario}, {"file", c.file}, {"agree_distance", kAgreeDistance},
+          {"entities", entities}, {"state_hash", hashes}};
+}
+
+}  // namespace tabletop
