@@ -1,5 +1,6 @@
 #include "sim/ModeComparison.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -14,6 +15,8 @@ namespace {
 constexpr double kSampleInterval = 1.0 / 120.0;
 // A yaw difference beyond this is a rotation, degrees.
 constexpr double kRotatedDegrees = 2.0;
+// Coming back along the line by more than this is a bounce, metres.
+constexpr double kBackDistance = 5e-3;
 // An up axis tilted more than this is tipped, degrees.
 constexpr double kTippedDegrees = 10.0;
 
@@ -70,7 +73,12 @@ std::string verdict(const Vec3& start, const ModeOutcome& rules, const ModeOutco
     const Vec3 along = ruleMove * (1.0 / ruleLength);
     const double ahead = move.x * along.x + move.z * along.z;
     const double side = std::abs(move.x * along.z - move.z * along.x);
-    if (ahead < -kAgreeDistance) return diverges("bounced back");
+    // Bounced back: it got further along the rules' line than where it ended.
+    double furthest = ahead;
+    for (const Vec3& p : other.trajectory.points) {
+      furthest = std::max(furthest, (p.x - start.x) * along.x + (p.z - start.z) * along.z);
+    }
+    if (furthest - ahead > kBackDistance) return diverges("bounced back");
     if (side > std::abs(ahead - ruleLength)) return diverges("went sideways");
     return diverges(ahead < ruleLength ? "stopped short" : "went further");
   }

@@ -54,7 +54,8 @@ Comparison compareModes(const Scenario& scenario, const Settings& settings);
 /// table, the rules kept it), stayed behind (the rules dropped it, it stayed
 /// on the table), dropped from another edge, tipped (no longer upright on
 /// the table), rotated (turned about the vertical by more than 2 degrees),
-/// bounced back (moved against the rules' displacement), stopped short,
+/// bounced back (came back more than 5 mm along the rules' line from the
+/// furthest point it reached), stopped short,
 /// went further, went sideways. Two entities dropped by the same edge agree
 /// wherever they land: where a fall ends is physics, not a rule.
 std::string verdict(const Vec3& start, const ModeOutcome& rules, const ModeOutcome& other);
