@@ -1,13 +1,22 @@
 #include "physics/CompatWorld.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "physics/GjkContactFinder.h"
 
 namespace tabletop {
+namespace {
+
+// A released body has landed once its vertical speed stays below this...
+constexpr double kLandedSpeed = 5e-3;  // m/s
+// ...for this long.
+constexpr double kLandedWindow = 0.1;  // s
+
+}  // namespace
 
 CompatWorld::CompatWorld(std::unique_ptr<World> world, std::vector<rules::RuleBody> bodies)
-    : world_(std::move(world)), settled_(bodies.size(), false) {
+    : world_(std::move(world)), settled_(bodies.size(), false), landedSince_(bodies.size(), -1.0) {
   for (std::size_t i = 0; i < bodies.size(); ++i) world_->makeKinematic(i);
   engine_ = std::make_unique<rules::RuleEngine>("compat", world_->settings(), world_->table().spec(),
                                                 std::move(bodies),
@@ -50,22 +59,31 @@ void CompatWorld::step() {
   mergeEvents();
 }
 
-// A released body's drop ends when Bullet has it at rest.
+// A released body's drop ends once it has landed: held up by the ground
+// and not moving up or down for kLandedWindow. A ball may roll on along the
+// floor under physics; the rules have no floor to roll on, and the script
+// does not wait for it.
 void CompatWorld::observeReleased() {
   const auto& shapes = world_->entities();
+  const double now = engine_->time();
   for (std::size_t i = 0; i < shapes.size(); ++i) {
-    if (!engine_->released(i) || settled_[i] || !world_->atRest(i)) continue;
+    if (!engine_->released(i) || settled_[i]) continue;
+    const Shape& shape = *shapes[i];
+    const bool landed = shape.support() == "ground" &&
+                        std::abs(shape.body()->getLinearVelocity().y()) < kLandedSpeed;
+    if (!landed) {
+      landedSince_[i] = -1.0;
+      continue;
+    }
+    if (landedSince_[i] < 0.0) landedSince_[i] = now;
+    if (now - landedSince_[i] < kLandedWindow - 1e-12) continue;
     settled_[i] = true;
     Event lands;
-    lands.t = engine_->time();
+    lands.t = landedSince_[i];
     lands.type = EventType::Lands;
-    lands.entity = shapes[i]->name();
-    lands.on = shapes[i]->support();
+    lands.entity = shape.name();
+    lands.on = shape.support();
     ownEvents_.push_back(lands);
-    Event rest = lands;
-    rest.type = EventType::AtRest;
-    rest.on.clear();
-    ownEvents_.push_back(rest);
   }
 }
 
@@ -91,9 +109,7 @@ std::vector<EntityState> CompatWorld::snapshot() const {
       // The rules said which edge; Bullet says when the drop is over.
       const EntityPositionStatus edge = states[i].status;
       states[i] = physical[i];
-      states[i].status = settled_[i] && states[i].position.y < world_->table().topHeight()
-                             ? EntityPositionStatus::FinishDropSimulation
-                             : edge;
+      states[i].status = settled_[i] ? EntityPositionStatus::FinishDropSimulation : edge;
     } else {
       states[i].angularVelocity = {};
     }

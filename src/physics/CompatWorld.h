@@ -19,8 +19,9 @@ namespace tabletop {
 /// direction, over the same distance. Once an entity's centre passes a
 /// table edge it is released: it becomes a dynamic body again, with the
 /// velocity it had, and falls under full physics to the ground; its drop
-/// ends (FinishDropSimulation) when Bullet says it is at rest below the
-/// table top. A rider pushed off its base falls by the rules (the report's
+/// ends (FinishDropSimulation) once it has landed there: held up by the
+/// ground and still vertically for 0.1 s. (A ball may then roll on along
+/// the floor; the rules have no floor to roll on.) A rider pushed off its base falls by the rules (the report's
 /// straight drop onto the table); only table edges hand bodies to physics.
 class CompatWorld : public Simulation, private rules::ReleaseHandler {
  public:
@@ -46,8 +47,9 @@ class CompatWorld : public Simulation, private rules::ReleaseHandler {
 
   std::unique_ptr<World> world_;
   std::unique_ptr<rules::RuleEngine> engine_;
-  std::vector<bool> settled_;    // released and at rest
-  std::vector<Event> ownEvents_; // lands and at rest of released bodies
+  std::vector<bool> settled_;          // released and landed
+  std::vector<double> landedSince_;    // when it last touched down still, or -1
+  std::vector<Event> ownEvents_;       // landings of released bodies
   std::vector<Event> events_;    // engine's and own, in time order
 };
 
