@@ -394,9 +394,9 @@ void RuleEngine::push(const Arrow& arrow, const PushMagnitude& magnitude) {
   }
   if (m.phase == Phase::Released || m.phase == Phase::Clearing || m.phase == Phase::Falling ||
       b.support == kOnGround || b.status != EntityPositionStatus::OnTable) {
-    throw std::invalid_argument("'" + b.name + "' is " + std::string(toString(b.status)) +
-                                (b.support == kOnGround ? " on the ground" : "") +
-                                ": the report's rules push only entities on the table");
+    const std::string where = b.support == kOnGround ? "on the ground (" + std::string(toString(b.status)) + ")"
+                                                     : std::string(toString(b.status));
+    throw std::invalid_argument("'" + b.name + "' is " + where + ": the report's rules push only entities on the table");
   }
   if (m.phase == Phase::Driven) {
     throw std::invalid_argument("'" + b.name + "' is still moving from an earlier push; wait for rest first");

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -151,6 +152,77 @@ TEST(CommandLine, OverlapAndMissingFileAndBadOptionsAreStatusTwo) {
   EXPECT_EQ(o.status, 2);
   o = run(kBin + "tabletop");
   EXPECT_EQ(o.status, 2);
+}
+
+// Every mode prints the same JSON keys for each entity.
+TEST(CommandLine, EveryModeRunsWithTheSameOutputFormat) {
+  std::vector<std::string> keys;
+  for (const char* mode : {"bullet", "compat", "rules"}) {
+    const Outcome o = run(kBin + "tabletop run --json --mode " + mode + " " + kScenarios + "example2_two_cubes.json");
+    ASSERT_EQ(o.status, 0) << mode << ": " << o.err;
+    const nlohmann::json j = nlohmann::json::parse(o.out);
+    EXPECT_EQ(j["mode"], mode);
+    std::vector<std::string> these;
+    for (const auto& [key, value] : j["entities"][0].items()) these.push_back(key);
+    if (keys.empty()) keys = these;
+    EXPECT_EQ(these, keys) << mode;
+    EXPECT_EQ(j["entities"][1]["status"], "FinishDropSimulation") << mode;
+  }
+}
+
+TEST(CommandLine, UnknownModeAndImpossiblePushesAreStatusTwo) {
+  Outcome o = run(kBin + "tabletop run --mode physics " + kScenarios + "example1_single_cube.json");
+  EXPECT_EQ(o.status, 2);
+  EXPECT_NE(o.err.find("--mode"), std::string::npos) << o.err;
+  EXPECT_TRUE(o.out.empty());
+  const std::string grounded = writeTemp("grounded.json", R"({"version": 1, "name": "t", "entities": [
+    {"name": "A", "shape": "cube", "size": 0.1, "position": [1.0, 0], "on": "ground", "mass": 1}],
+    "script": [{"push": {"entity": "A", "direction": "Left", "step": 0.1}}]})");
+  for (const char* mode : {"rules", "compat"}) {
+    o = run(kBin + "tabletop run --mode " + std::string(mode) + " " + grounded);
+    EXPECT_EQ(o.status, 2) << mode;
+    EXPECT_EQ(lineCount(o.err), 1) << o.err;
+    EXPECT_NE(o.err.find("at /script/0: cannot do this action in mode " + std::string(mode) +
+                         ": 'A' is on the ground"),
+              std::string::npos)
+        << o.err;
+  }
+  const std::string impulse = writeTemp("impulse.json", R"({"version": 1, "name": "t", "entities": [
+    {"name": "A", "shape": "cube", "size": 0.1, "position": [0, 0], "mass": 1}],
+    "script": [{"push": {"entity": "A", "direction": "Left", "impulse": 0.5}}]})");
+  o = run(kBin + "tabletop run --mode rules " + impulse);
+  EXPECT_EQ(o.status, 2);
+  EXPECT_NE(o.err.find("give the push a 'step'"), std::string::npos) << o.err;
+  o = run(kBin + "tabletop run --mode bullet " + impulse);
+  EXPECT_EQ(o.status, 0) << o.err;
+}
+
+// The issue's check: compat and rules agree on misaligned_cubes.json,
+// bullet diverges with a reason, and the plot is written whole.
+TEST(CommandLine, CompareNamesWhereBulletDivergesAndPlotsIt) {
+  const std::string plot = ::testing::TempDir() + "tabletop_compare_" + std::to_string(getpid()) + ".png";
+  std::remove(plot.c_str());
+  Outcome o = run(kBin + "tabletop compare --json " + kScenarios + "misaligned_cubes.json --plot " + plot);
+  ASSERT_EQ(o.status, 0) << o.err;
+  const nlohmann::json j = nlohmann::json::parse(o.out);
+  for (const auto& e : j["entities"]) {
+    EXPECT_EQ(e["compat"]["verdict"], "agrees") << e["name"];
+    EXPECT_LT(e["compat"]["distance_from_rules"].get<double>(), 1e-3);
+    EXPECT_EQ(e["bullet"]["verdict"], "diverges: rotated") << e["name"];
+  }
+  std::ifstream png(plot, std::ios::binary);
+  std::string magic(8, '\0');
+  png.read(magic.data(), 8);
+  EXPECT_EQ(magic, "\x89PNG\r\n\x1a\n");
+  std::ifstream part(plot + ".part");
+  EXPECT_FALSE(part.good()) << "temporary file left behind";
+
+  o = run(kBin + "tabletop compare " + kScenarios + "misaligned_cubes.json");
+  EXPECT_EQ(o.status, 0);
+  EXPECT_NE(o.out.find("diverges: rotated"), std::string::npos) << o.out;
+  o = run(kBin + "tabletop compare " + kScenarios + "misaligned_cubes.json --plot out.jpeg");
+  EXPECT_EQ(o.status, 1);
+  EXPECT_NE(o.err.find("expected a file name ending in .png or .svg"), std::string::npos) << o.err;
 }
 
 }  // namespace

@@ -227,7 +227,7 @@ TEST(RuleEngine, RefusesPushesItCannotCarryOut) {
     push(*e, "A", DirectionDef::Left, 0.2);
     FAIL() << "a push on an entity on the ground must be refused";
   } catch (const std::invalid_argument& error) {
-    EXPECT_NE(std::string(error.what()).find("'A' is FinishDropSimulation on the ground"), std::string::npos)
+    EXPECT_NE(std::string(error.what()).find("'A' is on the ground (FinishDropSimulation)"), std::string::npos)
         << error.what();
   }
 }
