@@ -89,7 +89,8 @@ std::string writeTrajectoryPlot(const Comparison& c, const TableSpec& table, con
   }
   g << "\nunset output\n";
 
-  FILE* pipe = popen("gnuplot 2>/dev/null", "w");
+  // gnuplot falls back to standard output when it cannot open a file.
+  FILE* pipe = popen("gnuplot >/dev/null 2>&1", "w");
   if (!pipe) return "--plot: could not start gnuplot";
   const std::string script = g.str();
   std::fwrite(script.data(), 1, script.size(), pipe);
