@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "core/Angle.h"
+#include "sim/ResultFormat.h"
 #include "sim/SceneBuilder.h"
 #include "sim/ScriptRunner.h"
 
@@ -40,16 +41,6 @@ std::string firstEdge(const RunResult& run, const std::string& entity) {
     if (e.type == EventType::LeavesTable && e.entity == entity) return e.edge;
   }
   return {};
-}
-
-std::string fixed(double v, int digits) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, "%.*f", digits, v);
-  return buffer;
-}
-
-std::string padded(const std::string& s, std::size_t width) {
-  return s.size() >= width ? s + " " : s + std::string(width - s.size(), ' ');
 }
 
 }  // namespace

@@ -6,7 +6,6 @@
 #include "core/StateHash.h"
 
 namespace tabletop {
-namespace {
 
 std::string fixed(double v, int digits) {
   char text[64];
@@ -17,6 +16,8 @@ std::string fixed(double v, int digits) {
 std::string padded(const std::string& s, std::size_t width) {
   return s.size() >= width ? s + " " : s + std::string(width - s.size(), ' ');
 }
+
+namespace {
 
 nlohmann::json eventJson(const Event& e) {
   nlohmann::json j{{"t", e.t}, {"type", toString(e.type)}, {"entities", eventEntities(e)}};
