@@ -1,7 +1,6 @@
 #include "rules/RuleEngine.h"
 
 #include <cmath>
-#include <functional>
 #include <stdexcept>
 
 #include "core/DirectionDef.h"
@@ -183,7 +182,8 @@ void RuleEngine::advance(double dt) {
   const std::size_t n = bodies_.size();
   // Own displacements first (they change the motion), then add what each
   // body's support moved.
-  std::vector<Vec3> own(n);
+  std::vector<Vec3>& own = own_;
+  own.assign(n, Vec3{});
   for (std::size_t i = 0; i < n; ++i) {
     Motion& m = motion_[i];
     switch (m.phase) {
@@ -202,18 +202,15 @@ void RuleEngine::advance(double dt) {
       default: break;
     }
   }
-  std::vector<Vec3> total(n);
-  std::vector<bool> done(n, false);
-  const std::function<Vec3(std::size_t)> moved = [&](std::size_t i) -> Vec3 {
-    if (done[i]) return total[i];
-    const int s = bodies_[i].support;
-    total[i] = (s >= 0 && motion_[i].phase != Phase::Released) ? own[i] + moved(static_cast<std::size_t>(s))
-                                                               : own[i];
-    done[i] = true;
-    return total[i];
-  };
+  // What each body's supports moved, added down the chain: a support is
+  // never its own rider, so the chains end.
   for (std::size_t i = 0; i < n; ++i) {
-    if (motion_[i].phase != Phase::Released) bodies_[i].position = bodies_[i].position + moved(i);
+    if (motion_[i].phase == Phase::Released) continue;
+    Vec3 moved = own[i];
+    for (int s = bodies_[i].support; s >= 0; s = bodies_[static_cast<std::size_t>(s)].support) {
+      moved = moved + own[static_cast<std::size_t>(s)];
+    }
+    bodies_[i].position = bodies_[i].position + moved;
   }
 }
 

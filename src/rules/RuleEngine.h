@@ -133,6 +133,7 @@ class RuleEngine : public Simulation {
   TableEdges edges_;
   std::vector<RuleBody> bodies_;
   std::vector<Motion> motion_;
+  std::vector<Vec3> own_;  // scratch for advance(), kept between steps
   std::unique_ptr<ContactFinder> finder_;
   ReleaseHandler* release_;
   std::vector<Event> events_;
