@@ -1,0 +1,95 @@
+#include "sim/ScriptPlayer.h"
+
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include "scenario/ScenarioError.h"
+
+namespace tabletop {
+namespace {
+
+// Times within this of a target count as reached (steps accumulate rounding).
+constexpr double kTimeSlack = 1e-9;
+
+}  // namespace
+
+ScriptPlayer::ScriptPlayer(const Scenario& scenario, const Settings& settings, Simulation& simulation,
+                           StepObserver afterStep)
+    : scenario_(scenario), settings_(settings), simulation_(simulation), afterStep_(std::move(afterStep)) {}
+
+bool ScriptPlayer::durationReached() const {
+  return simulation_.time() >= settings_.duration - kTimeSlack;
+}
+
+bool ScriptPlayer::waiting() const {
+  if (durationReached()) return false;
+  switch (wait_) {
+    case Wait::None: return false;
+    case Wait::Until: return simulation_.time() < deadline_ - kTimeSlack;
+    case Wait::UntilRest: return !simulation_.allAtRest() && simulation_.time() < deadline_ - kTimeSlack;
+  }
+  return false;
+}
+
+void ScriptPlayer::runDue() {
+  const std::vector<Action>& script = scenario_.script;
+  while (!waiting()) {
+    wait_ = Wait::None;
+    if (next_ >= script.size()) return;
+    const Action& action = script[next_];
+    if (action.at && !startTimeMet_) {
+      startTimeMet_ = true;
+      wait_ = Wait::Until;
+      deadline_ = *action.at;
+      continue;
+    }
+    startTimeMet_ = false;
+    ++next_;
+    if (durationReached()) {
+      // Past the duration only a wait for rest may still "run" (as a no-op).
+      if (action.type != Action::Type::WaitRest) next_ = script.size();
+      continue;
+    }
+    carryOut(action);
+  }
+}
+
+void ScriptPlayer::carryOut(const Action& action) {
+  try {
+    switch (action.type) {
+      case Action::Type::Push: simulation_.push(action.arrow, action.magnitude); break;
+      case Action::Type::Rotate: simulation_.rotate(action.entity, action.degrees); break;
+      case Action::Type::WaitTime:
+        wait_ = Wait::Until;
+        deadline_ = simulation_.time() + action.seconds;
+        break;
+      case Action::Type::WaitRest:
+        wait_ = Wait::UntilRest;
+        deadline_ = action.seconds > 0 ? simulation_.time() + action.seconds : settings_.duration;
+        break;
+    }
+  } catch (const std::invalid_argument& e) {
+    throw ScenarioError(scenario_.file, {{action.path, std::string("cannot do this action in mode ") +
+                                                           std::string(simulation_.modeName()) + ": " +
+                                                           e.what()}});
+  }
+}
+
+void ScriptPlayer::step() {
+  simulation_.step();
+  if (afterStep_) afterStep_(simulation_);
+  runDue();
+}
+
+bool ScriptPlayer::finished() const {
+  if (durationReached()) return true;
+  return scriptDone() && settings_.endAtRest && simulation_.allAtRest();
+}
+
+void ScriptPlayer::runToEnd() {
+  runDue();
+  while (!finished()) step();
+}
+
+}  // namespace tabletop

@@ -1,0 +1,61 @@
+#pragma once
+
+#include <cstddef>
+#include <functional>
+
+#include "core/Settings.h"
+#include "core/Simulation.h"
+#include "scenario/Scenario.h"
+
+namespace tabletop {
+
+/// Sees the simulation after every step (the comparison records
+/// trajectories with it).
+using StepObserver = std::function<void(const Simulation&)>;
+
+/// Plays a scenario's script on a Simulation of any mode, one step at a
+/// time, so that a batch run, a renderer taking frames and the interactive
+/// viewer all carry out the same actions at the same simulated times.
+///
+/// Actions run in order. One with a time "t" first waits for that time;
+/// "wait": "rest" waits until nothing moves (or its timeout, or the
+/// duration); "wait": S waits S seconds. Once the duration is reached the
+/// remaining pushes and rotations are dropped. An action the mode cannot
+/// carry out throws a ScenarioError naming the action.
+class ScriptPlayer {
+ public:
+  ScriptPlayer(const Scenario& scenario, const Settings& settings, Simulation& simulation,
+               StepObserver afterStep = {});
+
+  /// Carries out every action whose time has come, up to the first one
+  /// that must wait.
+  void runDue();
+  /// One step of the simulation, then runDue().
+  void step();
+  /// True when no action is left and none is waiting.
+  bool scriptDone() const { return next_ >= scenario_.script.size() && wait_ == Wait::None; }
+  /// True once a batch run ends: the duration is reached, or the script is
+  /// done and (with settings.endAtRest) everything is at rest.
+  bool finished() const;
+  /// Steps until finished().
+  void runToEnd();
+
+  Simulation& simulation() { return simulation_; }
+
+ private:
+  enum class Wait { None, Until, UntilRest };
+  bool durationReached() const;
+  bool waiting() const;
+  void carryOut(const Action& action);
+
+  const Scenario& scenario_;
+  Settings settings_;
+  Simulation& simulation_;
+  StepObserver afterStep_;
+  std::size_t next_ = 0;     // the next action
+  bool startTimeMet_ = false;  // the next action's "t" has been waited for
+  Wait wait_ = Wait::None;
+  double deadline_ = 0.0;
+};
+
+}  // namespace tabletop
