@@ -45,3 +45,10 @@ message(STATUS "tabletop: Bullet ${BULLET_VERSION_STRING} from ${_tabletop_bulle
 
 find_package(nlohmann_json 3.10 CONFIG REQUIRED)
 find_package(CLI11 CONFIG REQUIRED)
+
+# Rendering: libpng for images; OpenGL headers, freeglut and X11 for the
+# window; OSMesa (pkg-config) for headless frames (see src/headless).
+find_package(PNG REQUIRED)
+find_package(OpenGL REQUIRED)
+find_package(GLUT REQUIRED)
+find_package(X11 REQUIRED)

@@ -6,7 +6,9 @@
 #include <CLI/CLI.hpp>
 
 #include "app/CompareCommand.h"
+#include "app/RenderCommand.h"
 #include "app/RunCommand.h"
+#include "app/ViewCommand.h"
 
 int main(int argc, char** argv) {
   using namespace tabletop;
@@ -37,6 +39,32 @@ int main(int argc, char** argv) {
   compareCommand->callback([&] {
     compare.run.scenarios.push_back({compareFile, std::nullopt});
     status = compareScenario(compare, std::cout, std::cerr);
+  });
+
+  RenderOptions render;
+  std::string renderFile;
+  CLI::App* renderCommand = app.add_subcommand(
+      "render", "Render a scenario without a display (OSMesa) to PNG frames, and with --video to MP4 or GIF");
+  renderCommand->add_option("SCENARIO", renderFile, "Scenario file (JSON)")->required();
+  addRunOptions(*renderCommand, render.run);
+  renderCommand->remove_option(renderCommand->get_option("--json"));
+  addRenderOptions(*renderCommand, render);
+  renderCommand->callback([&] {
+    render.run.scenarios.push_back({renderFile, std::nullopt});
+    status = renderScenario(render, std::cout, std::cerr);
+  });
+
+  ViewOptions view;
+  std::string viewFile;
+  CLI::App* viewCommand = app.add_subcommand(
+      "view", "Open the report's window on a scenario: watch it, push entities with the keyboard (H: help)");
+  viewCommand->add_option("SCENARIO", viewFile, "Scenario file (JSON)")->required();
+  addRunOptions(*viewCommand, view.run);
+  viewCommand->remove_option(viewCommand->get_option("--json"));
+  addViewOptions(*viewCommand, view);
+  viewCommand->callback([&] {
+    view.run.scenarios.push_back({viewFile, std::nullopt});
+    status = viewScenario(view, std::cerr);
   });
 
   try {

@@ -7,6 +7,7 @@
 #include "core/Arrow.h"
 #include "core/EntityState.h"
 #include "core/Event.h"
+#include "core/Vec3.h"
 
 namespace tabletop {
 
@@ -34,6 +35,9 @@ class Simulation {
   virtual std::vector<EntityState> snapshot() const = 0;
   /// Everything that happened so far, in time order.
   virtual const std::vector<Event>& events() const = 0;
+  /// Where bodies touch now, in metres, for drawing (none in modes without
+  /// contacts).
+  virtual std::vector<Vec3> contactPoints() const { return {}; }
 };
 
 }  // namespace tabletop

@@ -2,6 +2,7 @@
 
 #include "core/Colour.h"
 #include "core/Material.h"
+#include "core/Vec3.h"
 
 namespace tabletop {
 
@@ -18,6 +19,16 @@ struct TableSpec {
   double centreZ = 0.0;
   Material material = kNeutralMaterial;
   Colour colour{150, 100, 60};
+
+  /// Centre of leg `i` (0..3), in world space. Legs stand one leg diameter
+  /// in from each corner and reach from the ground to the underside of the
+  /// top.
+  Vec3 legCentre(int i) const {
+    const double inset = 2.0 * legRadius;
+    const double x = (i % 2 == 0 ? -1.0 : 1.0) * (0.5 * width - inset);
+    const double z = (i < 2 ? -1.0 : 1.0) * (0.5 * depth - inset);
+    return {centreX + x, 0.5 * (height - thickness), centreZ + z};
+  }
 };
 
 }  // namespace tabletop

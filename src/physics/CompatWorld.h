@@ -38,6 +38,7 @@ class CompatWorld : public Simulation, private rules::ReleaseHandler {
   bool allAtRest() const override;
   std::vector<EntityState> snapshot() const override;
   const std::vector<Event>& events() const override { return events_; }
+  std::vector<Vec3> contactPoints() const override { return world_->contactPoints(); }
 
  private:
   void release(std::size_t body, const Vec3& velocity) override;

@@ -36,11 +36,8 @@ Table::Table(const TableSpec& spec) : spec_(spec) {
 Table::~Table() = default;
 
 btVector3 Table::legCentre(int i) const {
-  // Legs stand one leg diameter in from each corner.
-  const double inset = 2.0 * spec_.legRadius;
-  const double x = (i % 2 == 0 ? -1.0 : 1.0) * (0.5 * spec_.width - inset);
-  const double z = (i < 2 ? -1.0 : 1.0) * (0.5 * spec_.depth - inset);
-  return btVector3(spec_.centreX + x, 0.5 * (spec_.height - spec_.thickness), spec_.centreZ + z);
+  const Vec3 c = spec_.legCentre(i);
+  return btVector3(c.x, c.y, c.z);
 }
 
 rules::TableEdges Table::edges() const { return {xLeft(), xRight(), zBack(), zFront()}; }

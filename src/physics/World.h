@@ -77,6 +77,7 @@ class World : public Simulation {
   bool allAtRest() const override;
   std::vector<EntityState> snapshot() const override;
   const std::vector<Event>& events() const override { return events_; }
+  std::vector<Vec3> contactPoints() const override;
 
  private:
   // A support index that names no body.

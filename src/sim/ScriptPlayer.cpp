@@ -58,7 +58,7 @@ void ScriptPlayer::runDue() {
 void ScriptPlayer::carryOut(const Action& action) {
   try {
     switch (action.type) {
-      case Action::Type::Push: simulation_.push(action.arrow, action.magnitude); break;
+      case Action::Type::Push: push(action.arrow, action.magnitude); break;
       case Action::Type::Rotate: simulation_.rotate(action.entity, action.degrees); break;
       case Action::Type::WaitTime:
         wait_ = Wait::Until;
@@ -74,6 +74,20 @@ void ScriptPlayer::carryOut(const Action& action) {
                                                            std::string(simulation_.modeName()) + ": " +
                                                            e.what()}});
   }
+}
+
+void ScriptPlayer::push(const Arrow& arrow, const PushMagnitude& magnitude) {
+  simulation_.push(arrow, magnitude);
+  lastArrow_ = arrow;
+  ++pushes_;
+}
+
+std::optional<Arrow> ScriptPlayer::arrow() const {
+  if (lastArrow_) return lastArrow_;
+  for (const Action& a : scenario_.script) {
+    if (a.type == Action::Type::Push) return a.arrow;
+  }
+  return std::nullopt;
 }
 
 void ScriptPlayer::step() {

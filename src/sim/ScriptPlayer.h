@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 
 #include "core/Settings.h"
 #include "core/Simulation.h"
@@ -40,6 +41,15 @@ class ScriptPlayer {
   /// Steps until finished().
   void runToEnd();
 
+  /// Pushes now, as a scripted push does (the viewer's pushes come here).
+  /// Throws std::invalid_argument when the mode cannot.
+  void push(const Arrow& arrow, const PushMagnitude& magnitude);
+  /// The arrow of the last push, or before any push the first scripted
+  /// push's arrow; empty if there is neither.
+  std::optional<Arrow> arrow() const;
+  /// Pushes so far, scripted or not.
+  int pushes() const { return pushes_; }
+
   Simulation& simulation() { return simulation_; }
 
  private:
@@ -56,6 +66,8 @@ class ScriptPlayer {
   bool startTimeMet_ = false;  // the next action's "t" has been waited for
   Wait wait_ = Wait::None;
   double deadline_ = 0.0;
+  std::optional<Arrow> lastArrow_;
+  int pushes_ = 0;
 };
 
 }  // namespace tabletop

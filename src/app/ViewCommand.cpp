@@ -1,0 +1,58 @@
+#include "app/ViewCommand.h"
+
+#include <ostream>
+
+#include <CLI/CLI.hpp>
+
+#include "app/RenderCommand.h"
+#include "draw/Camera.h"
+#include "scenario/ScenarioError.h"
+#include "viewer/Viewer.h"
+
+namespace tabletop {
+
+void addViewOptions(CLI::App& command, ViewOptions& options) {
+  command.add_flag("!--no-script", options.playScript,
+                   "Do not play the scenario's script on start (Enter plays it)");
+  command.add_option("--step", options.step, "The step G pushes by, metres (default: the script's first step)")
+      ->check(CLI::PositiveNumber);
+  command.add_option("--camera", options.camera, "View: front (the report's), corner, side or top")
+      ->check(CLI::IsMember(Camera::names()));
+  command.add_option("--size", options.size, "Window size in pixels, WxH (default 1024x768)");
+  command.add_option("--screenshot-dir", options.screenshotDir, "Where F12 writes screenshots (default .)");
+}
+
+int viewScenario(const ViewOptions& options, std::ostream& err) {
+  const auto size = parseImageSize(options.size);
+  if (!size) {
+    err << "tabletop view: --size: expected WxH with each side 1..8192 pixels, got '" << options.size << "'\n";
+    return kExitBadInput;
+  }
+  // A missing display is said before the scenario is even read.
+  const std::string problem = displayProblem();
+  if (!problem.empty()) {
+    err << "tabletop view: needs a display (" << problem
+        << "); to make pictures without one use: tabletop render SCENARIO --out DIR\n";
+    return kExitFailure;
+  }
+  try {
+    Settings settings;
+    Scenario scenario = loadScenario(options.run.scenarios.front(), options.run, settings);
+    ViewerSettings viewer;
+    viewer.mode = options.run.mode;
+    viewer.playScript = options.playScript;
+    viewer.step = options.step;
+    viewer.camera = options.camera;
+    ViewerSession session(std::move(scenario), settings, viewer);
+    WindowSettings window;
+    window.width = size->first;
+    window.height = size->second;
+    window.screenshotDir = options.screenshotDir;
+    return runViewer(session, window, err) == 0 ? kExitOk : kExitFailure;
+  } catch (const ScenarioError& e) {
+    for (const std::string& line : e.lines()) err << line << "\n";
+    return kExitBadInput;
+  }
+}
+
+}  // namespace tabletop

@@ -1,0 +1,31 @@
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "core/Arrow.h"
+#include "core/EntityState.h"
+#include "draw/DrawList.h"
+#include "scenario/Scenario.h"
+
+namespace tabletop {
+
+/// What a frame shows besides the entities.
+struct DrawOptions {
+  bool arrow = true;     ///< the report's Push Direction (On/Off)
+  bool contacts = false; ///< draw contact points
+};
+
+/// The draw list of `scenario` with its entities where `states` (one per
+/// entity, in scenario order, from any mode's snapshot) puts them; the
+/// arrow on its face of its entity when given and shown; and `contacts`.
+DrawList makeDrawList(const Scenario& scenario, const std::vector<EntityState>& states,
+                      const std::optional<Arrow>& arrow, const std::vector<Vec3>& contacts,
+                      const DrawOptions& options = {});
+
+/// The arrow as drawn for an entity of `spec` in `state`: its head touches
+/// the pushed face (report 3.3.6), its length is 1.2 times the entity's
+/// size, at the height of the entity's centre.
+DrawArrow arrowFor(const Arrow& arrow, const EntitySpec& spec, const EntityState& state);
+
+}  // namespace tabletop

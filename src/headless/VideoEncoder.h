@@ -1,0 +1,18 @@
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace tabletop {
+
+/// True when an `ffmpeg` executable is on the PATH.
+bool ffmpegAvailable();
+
+/// Encodes the numbered PNG frames `framePattern` (printf style, e.g.
+/// "DIR/frame_%05d.png") played at `fps` into `out`, an .mp4 (H.264,
+/// yuv420p) or a .gif (with a palette made from the frames), by running
+/// ffmpeg. Writes a temporary file renamed into place. Returns an error
+/// message, or nothing on success.
+std::optional<std::string> encodeVideo(const std::string& framePattern, double fps, const std::string& out);
+
+}  // namespace tabletop

@@ -1,0 +1,36 @@
+#pragma once
+
+#include <cstddef>
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "core/Colour.h"
+
+namespace tabletop {
+
+/// An 8-bit RGB image, top row first (as image files store it; OpenGL reads
+/// its rows bottom first, so whoever reads a framebuffer flips them).
+struct Image {
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> rgb;  ///< width * height * 3 bytes
+
+  Image() = default;
+  Image(int w, int h) : width(w), height(h), rgb(static_cast<std::size_t>(w) * h * 3, 0) {}
+
+  Colour at(int column, int row) const {
+    const std::size_t i = (static_cast<std::size_t>(row) * width + column) * 3;
+    return {rgb[i], rgb[i + 1], rgb[i + 2]};
+  }
+
+  /// Reverses the order of the rows (bottom-first to top-first).
+  void flipRows() {
+    const std::size_t stride = static_cast<std::size_t>(width) * 3;
+    for (int top = 0, bottom = height - 1; top < bottom; ++top, --bottom) {
+      std::swap_ranges(rgb.begin() + top * stride, rgb.begin() + (top + 1) * stride, rgb.begin() + bottom * stride);
+    }
+  }
+};
+
+}  // namespace tabletop

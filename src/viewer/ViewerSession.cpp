@@ -1,0 +1,206 @@
+#include "viewer/ViewerSession.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "draw/SceneDrawing.h"
+#include "sim/SceneBuilder.h"
+
+namespace tabletop {
+namespace {
+
+// The faces Space visits, going round the entity.
+constexpr DirectionDef kFaces[4] = {DirectionDef::Left, DirectionDef::Back, DirectionDef::Right, DirectionDef::Front};
+// Entities without faces take these world angles (report 3.8), degrees.
+constexpr double kAngles[4] = {0.0, 90.0, 180.0, 270.0};
+
+constexpr double kDefaultStep = 0.2;      // metres
+constexpr double kMostAtOnce = 0.25;      // wall seconds of steps per advance()
+constexpr double kRateWindow = 0.5;       // wall seconds per real-time factor
+constexpr double kSlowest = 1.0 / 64.0, kFastest = 4.0;
+
+bool hasFaces(ShapeKind k) { return k == ShapeKind::Cube || k == ShapeKind::SolidBox; }
+
+std::string fixed(double v, int digits) {
+  char text[48];
+  std::snprintf(text, sizeof text, "%.*f", digits, v);
+  return text;
+}
+
+}  // namespace
+
+ViewerSession::ViewerSession(Scenario scenario, Settings settings, ViewerSettings viewer)
+    : scenario_(std::move(scenario)), settings_(settings), viewer_(std::move(viewer)) {
+  noScript_ = scenario_;
+  noScript_.script.clear();
+  camera_ = Camera::named(viewer_.camera, scenario_.table).value_or(Camera{});
+  // The arrow starts where the script first pushes, else on the first
+  // entity's Left face; G's step is the script's first step.
+  step_ = viewer_.step.value_or(kDefaultStep);
+  bool found = false;
+  for (const Action& a : scenario_.script) {
+    if (a.type != Action::Type::Push) continue;
+    arrow_ = a.arrow;
+    if (!viewer_.step && a.magnitude.kind == PushMagnitude::Kind::Step) step_ = a.magnitude.value;
+    found = true;
+    break;
+  }
+  if (!found && !scenario_.entities.empty()) {
+    arrow_.entity = scenario_.entities.front().name;
+    if (hasFaces(scenario_.entities.front().shape)) arrow_.face = DirectionDef::Left;
+  }
+  build(viewer_.playScript);
+}
+
+void ViewerSession::build(bool playScript) {
+  player_.reset();
+  simulation_ = buildSimulation(scenario_, settings_, viewer_.mode);
+  player_ = std::make_unique<ScriptPlayer>(playScript ? scenario_ : noScript_, settings_, *simulation_);
+  player_->runDue();
+  pushesSeen_ = player_->pushes();
+  budget_ = 0.0;
+}
+
+void ViewerSession::cycleArrow() {
+  const auto& entities = scenario_.entities;
+  if (entities.empty()) return;
+  std::size_t i = 0;
+  while (i < entities.size() && entities[i].name != arrow_.entity) ++i;
+  if (i == entities.size()) i = 0;
+  // The arrow's place among the entity's four.
+  int slot = 0;
+  for (int k = 0; k < 4; ++k) {
+    if (arrow_.face ? kFaces[k] == *arrow_.face : std::abs(kAngles[k] - arrow_.angleDegrees) < 1e-9) slot = k;
+  }
+  if (++slot == 4) {
+    slot = 0;
+    i = (i + 1) % entities.size();
+  }
+  arrow_ = Arrow{};
+  arrow_.entity = entities[i].name;
+  if (hasFaces(entities[i].shape)) {
+    arrow_.face = kFaces[slot];
+  } else {
+    arrow_.angleDegrees = kAngles[slot];
+  }
+  message_ = "arrow on " + arrowText();
+}
+
+void ViewerSession::pushArrowed() {
+  try {
+    player_->push(arrow_, PushMagnitude{PushMagnitude::Kind::Step, step_});
+    pushesSeen_ = player_->pushes();
+    message_ = "pushed " + arrowText() + ", step " + fixed(step_, 3) + " m";
+  } catch (const std::invalid_argument& e) {
+    message_ = std::string("cannot push: ") + e.what();
+  }
+}
+
+void ViewerSession::rotate(int sign) {
+  const double degrees = sign * viewer_.rotationDegrees;
+  if (rotationTarget_ == RotationTarget::TableAndEntities) {
+    camera_.orbit(-degrees, 0.0);  // the scene turns one way, so the eye turns the other
+    return;
+  }
+  const std::vector<EntityState> states = simulation_->snapshot();
+  int turned = 0;
+  try {
+    for (const EntityState& s : states) {
+      if (s.status != EntityPositionStatus::OnTable) continue;
+      simulation_->rotate(s.name, degrees);
+      ++turned;
+    }
+    message_ = "turned " + std::to_string(turned) + " entities on the table by " + fixed(degrees, 0) + " deg";
+  } catch (const std::invalid_argument& e) {
+    message_ = std::string("cannot turn: ") + e.what();
+  }
+}
+
+void ViewerSession::reset(bool playScript) {
+  build(playScript);
+  message_ = playScript ? "reset; playing the script" : "reset";
+}
+
+void ViewerSession::singleStep() {
+  if (!paused_) return;
+  player_->step();
+}
+
+void ViewerSession::setSpeed(double speed) {
+  speed_ = std::clamp(speed, kSlowest, kFastest);
+  message_ = "speed x" + fixed(speed_, speed_ < 0.1 ? 4 : 2);
+}
+
+void ViewerSession::advance(double wallSeconds) {
+  wallSeconds = std::max(0.0, wallSeconds);
+  const double before = simulation_->time();
+  if (!paused_) {
+    budget_ += std::min(wallSeconds, kMostAtOnce) * speed_;
+    while (budget_ >= settings_.timestep) {
+      player_->step();
+      budget_ -= settings_.timestep;
+    }
+  }
+  // The arrow follows the script's pushes.
+  if (player_->pushes() != pushesSeen_) {
+    pushesSeen_ = player_->pushes();
+    if (const auto a = player_->arrow()) arrow_ = *a;
+  }
+  windowWall_ += wallSeconds;
+  windowSim_ += simulation_->time() - before;
+  if (windowWall_ >= kRateWindow) {
+    realTimeFactor_ = windowSim_ / windowWall_;
+    windowWall_ = windowSim_ = 0.0;
+  }
+}
+
+DrawList ViewerSession::drawList() const {
+  DrawOptions options;
+  options.arrow = arrowVisible_;
+  options.contacts = contacts_;
+  return makeDrawList(scenario_, simulation_->snapshot(), arrow_,
+                      contacts_ ? simulation_->contactPoints() : std::vector<Vec3>{}, options);
+}
+
+std::string ViewerSession::arrowText() const {
+  if (arrow_.face) return arrow_.entity + ", " + std::string(toString(*arrow_.face)) + " face";
+  return arrow_.entity + ", angle " + fixed(arrow_.angleDegrees, 0) + " deg";
+}
+
+std::vector<std::string> ViewerSession::overlay() const {
+  std::vector<std::string> lines;
+  lines.push_back(scenario_.name + "   mode " + std::string(simulation_->modeName()) + "   (H: help)");
+  std::string timing = "t " + fixed(simulation_->time(), 3) + " s   real-time x" + fixed(realTimeFactor_, 2);
+  if (speed_ != 1.0) timing += "   speed x" + fixed(speed_, speed_ < 0.1 ? 4 : 2);
+  if (paused_) timing += "   PAUSED";
+  lines.push_back(timing);
+  lines.push_back("arrow: " + arrowText() + ", step " + fixed(step_, 3) + " m" + (arrowVisible_ ? "" : " (hidden)") +
+                  "   +/- turn " +
+                  (rotationTarget_ == RotationTarget::TableAndEntities ? "table and entities" : "entities on the table"));
+  for (const EntityState& s : simulation_->snapshot()) {
+    lines.push_back("  " + s.name + "  " + std::string(toString(s.status)) + "  (" + fixed(s.position.x, 3) + ", " +
+                    fixed(s.position.y, 3) + ", " + fixed(s.position.z, 3) + ") m  on " + s.support);
+  }
+  if (!message_.empty()) lines.push_back("> " + message_);
+  return lines;
+}
+
+std::vector<std::string> ViewerSession::help() {
+  return {
+      "Space  move the arrow to the next face / entity",
+      "G      push the arrowed entity one step",
+      "+ -    turn (see the menu's Set Rotation Entities)",
+      "A      arrow on/off          C  contact points",
+      "P      pause                 O  one step (paused)",
+      "S      slow motion x1/4      [ ]  slower / faster",
+      "R      reset                 Enter  reset and play the script",
+      "Z X    zoom in / out         F12  screenshot (PNG)",
+      "mouse  left drag: orbit; middle or Shift+left drag: pan; wheel: zoom",
+      "       right button: the report's menu",
+      "H      this help             Q Esc  quit",
+  };
+}
+
+}  // namespace tabletop

@@ -1,0 +1,125 @@
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/Arrow.h"
+#include "core/SimulationMode.h"
+#include "draw/Camera.h"
+#include "draw/DrawList.h"
+#include "scenario/Scenario.h"
+#include "sim/ScriptPlayer.h"
+
+namespace tabletop {
+
+/// The report's Set Rotation Entities menu: what + and - turn.
+enum class RotationTarget {
+  TableAndEntities,  ///< the whole scene turns about the table's centre (the view)
+  EntitiesOnTable,   ///< each entity on the table turns about its own centre
+};
+
+/// How a viewer starts.
+struct ViewerSettings {
+  SimulationMode mode = SimulationMode::Bullet;
+  bool playScript = true;           ///< play the scenario's script from the start
+  std::optional<double> step;       ///< G's step, metres; else the script's first step, else 0.2
+  std::string camera = "front";     ///< a Camera::named view
+  double rotationDegrees = 15.0;    ///< one press of + or -
+};
+
+/// Everything the interactive viewer does, without a window: the scene in
+/// one mode, its script played against the wall clock, the report's
+/// controls (arrow, push, rotation, zoom, reset) and the ones users of
+/// physics viewers expect (pause, single step, slow motion, contacts). The
+/// window (Viewer) only maps keys, mouse and menus onto it and draws what
+/// it says, so all of it is tested headless.
+///
+/// Pushes from the keyboard go through ScriptPlayer::push, the code the
+/// scripted pushes take.
+class ViewerSession {
+ public:
+  /// Throws ScenarioError for a scene the mode refuses.
+  ViewerSession(Scenario scenario, Settings settings, ViewerSettings viewer);
+  ViewerSession(const ViewerSession&) = delete;  // the script player holds on to the scenario
+  ViewerSession& operator=(const ViewerSession&) = delete;
+
+  // The report's controls.
+  /// Space: moves the arrow to the next face of the arrowed entity, and
+  /// after its last face to the next entity.
+  void cycleArrow();
+  /// G, Move entity: pushes the arrowed entity one step.
+  void pushArrowed();
+  /// + (sign +1) and - (sign -1): turns the view or the entities on the
+  /// table, as the rotation target says.
+  void rotate(int sign);
+  void setArrowVisible(bool visible) { arrowVisible_ = visible; }
+  bool arrowVisible() const { return arrowVisible_; }
+  void setRotationTarget(RotationTarget target) { rotationTarget_ = target; }
+  RotationTarget rotationTarget() const { return rotationTarget_; }
+  /// Reset: everything back to its initial place; with `playScript` the
+  /// script plays again from time 0.
+  void reset(bool playScript);
+
+  // The simulate-style controls.
+  void togglePause() { paused_ = !paused_; }
+  bool paused() const { return paused_; }
+  /// One simulation step, when paused.
+  void singleStep();
+  /// Simulated seconds per wall second (1: real time), within 1/64..4.
+  void setSpeed(double speed);
+  double speed() const { return speed_; }
+  void toggleContacts() { contacts_ = !contacts_; }
+  bool contactsShown() const { return contacts_; }
+  void showMessage(std::string message) { message_ = std::move(message); }
+
+  /// Lets `wallSeconds` of real time pass: steps the simulation to keep
+  /// pace at the chosen speed (never more than a quarter second of steps
+  /// at once, so a slow machine falls behind instead of freezing).
+  void advance(double wallSeconds);
+
+  Camera& camera() { return camera_; }
+  const Camera& camera() const { return camera_; }
+  const Scenario& scenario() const { return scenario_; }
+  const Simulation& simulation() const { return *simulation_; }
+  /// The arrow now: on which entity and face.
+  const Arrow& arrow() const { return arrow_; }
+  double stepLength() const { return step_; }
+  /// Simulated over wall seconds, measured over the last half second.
+  double realTimeFactor() const { return realTimeFactor_; }
+
+  /// The frame to draw now.
+  DrawList drawList() const;
+  /// The overlay's lines: scene, time and speed, the arrow, each entity's
+  /// status, and the last message.
+  std::vector<std::string> overlay() const;
+  /// The keys and the mouse, one line each.
+  static std::vector<std::string> help();
+
+ private:
+  void build(bool playScript);
+  std::string arrowText() const;
+
+  Scenario scenario_;
+  Scenario noScript_;  // the scene without its script
+  Settings settings_;
+  ViewerSettings viewer_;
+  std::unique_ptr<Simulation> simulation_;
+  std::unique_ptr<ScriptPlayer> player_;
+  Camera camera_;
+  Arrow arrow_;
+  int pushesSeen_ = 0;
+  double step_ = 0.2;
+  bool arrowVisible_ = true;
+  RotationTarget rotationTarget_ = RotationTarget::TableAndEntities;
+  bool paused_ = false;
+  double speed_ = 1.0;
+  bool contacts_ = false;
+  double budget_ = 0.0;  // simulated seconds owed to the wall clock
+  double windowWall_ = 0.0, windowSim_ = 0.0;
+  double realTimeFactor_ = 0.0;
+  std::string message_;
+};
+
+}  // namespace tabletop
