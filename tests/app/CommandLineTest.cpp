@@ -216,6 +216,7 @@ TEST(CommandLine, CompareNamesWhereBulletDivergesAndPlotsIt) {
   EXPECT_EQ(magic, "\x89PNG\r\n\x1a\n");
   std::ifstream part(plot + ".part");
   EXPECT_FALSE(part.good()) << "temporary file left behind";
+  std::remove(plot.c_str());
 
   o = run(kBin + "tabletop compare " + kScenarios + "misaligned_cubes.json");
   EXPECT_EQ(o.status, 0);
