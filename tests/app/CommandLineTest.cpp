@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -11,6 +12,8 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 #include <nlohmann/json.hpp>
+
+#include "image/PngFile.h"
 
 namespace {
 
@@ -224,6 +227,105 @@ TEST(CommandLine, CompareNamesWhereBulletDivergesAndPlotsIt) {
   o = run(kBin + "tabletop compare " + kScenarios + "misaligned_cubes.json --plot out.jpeg");
   EXPECT_EQ(o.status, 1);
   EXPECT_NE(o.err.find("expected a file name ending in .png or .svg"), std::string::npos) << o.err;
+}
+
+// A fresh, empty directory for one test's output files.
+std::string freshDir(const std::string& name) {
+  const std::string dir = ::testing::TempDir() + name + "_" + std::to_string(getpid());
+  std::filesystem::remove_all(dir);
+  return dir;
+}
+
+bool hasPartFiles(const std::string& dir) {
+  for (const auto& f : std::filesystem::directory_iterator(dir)) {
+    if (f.path().string().find(".part") != std::string::npos) return true;
+  }
+  return false;
+}
+
+// Stills at the times asked for, each a PNG of the size asked for.
+TEST(CommandLine, RenderWritesStillsOfTheSizeAsked) {
+  const std::string dir = freshDir("tabletop_render_stills");
+  const Outcome o = run(kBin + "tabletop render " + kScenarios + "example2_two_cubes.json --out " + dir +
+                        " --at 1.6,0,0.5 --size 320x240 --camera corner --mode compat");
+  ASSERT_EQ(o.status, 0) << o.err;
+  EXPECT_NE(o.out.find("3 frames of 320x240 (camera corner, mode compat)"), std::string::npos) << o.out;
+  for (const char* name : {"t_0.000.png", "t_0.500.png", "t_1.600.png"}) {
+    const tabletop::Image image = tabletop::readPng(dir + "/" + name);
+    EXPECT_EQ(image.width, 320) << name;
+    EXPECT_EQ(image.height, 240) << name;
+  }
+  EXPECT_FALSE(hasPartFiles(dir));
+  std::filesystem::remove_all(dir);
+}
+
+// Frames at --fps from 0 to the end of the run and half a second more,
+// encoded into a GIF and an MP4 by ffmpeg.
+TEST(CommandLine, RenderMakesFramesAndVideos) {
+  const std::string dir = freshDir("tabletop_render_video");
+  Outcome o = run(kBin + "tabletop render " + kScenarios + "example2_two_cubes.json --out " + dir +
+                  " --fps 10 --size 160x120 --video " + dir + "/ex2.gif");
+  ASSERT_EQ(o.status, 0) << o.err;
+  // Example 2 ends (everything at rest) at 1.621 s: frames 0.0 .. 2.1 s.
+  EXPECT_TRUE(std::filesystem::exists(dir + "/frame_00021.png"));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/frame_00022.png"));
+  std::ifstream gif(dir + "/ex2.gif", std::ios::binary);
+  std::string magic(6, '\0');
+  gif.read(magic.data(), 6);
+  EXPECT_EQ(magic, "GIF89a");
+
+  o = run(kBin + "tabletop render " + kScenarios + "example2_two_cubes.json --out " + dir +
+          " --fps 10 --size 161x121 --video " + dir + "/ex2.mp4");
+  ASSERT_EQ(o.status, 0) << o.err;
+  std::ifstream mp4(dir + "/ex2.mp4", std::ios::binary);
+  std::string box(8, '\0');
+  mp4.read(box.data(), 8);
+  EXPECT_EQ(box.substr(4), "ftyp") << "not an MP4 file";
+  EXPECT_FALSE(hasPartFiles(dir));
+  std::filesystem::remove_all(dir);
+}
+
+// Without ffmpeg the frames are still made, and one line says why there is
+// no video.
+TEST(CommandLine, RenderWithoutFfmpegKeepsTheFrames) {
+  const std::string dir = freshDir("tabletop_render_no_ffmpeg");
+  const Outcome o = run("env PATH=/nonexistent " + kBin + "tabletop render " + kScenarios +
+                        "example1_single_cube.json --out " + dir + " --fps 5 --size 80x60 --video " + dir + "/a.mp4");
+  EXPECT_EQ(o.status, 0) << o.err;
+  EXPECT_EQ(lineCount(o.err), 1) << o.err;
+  EXPECT_NE(o.err.find("ffmpeg is not installed"), std::string::npos) << o.err;
+  EXPECT_TRUE(std::filesystem::exists(dir + "/frame_00000.png"));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/a.mp4"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CommandLine, RenderRefusesBadOptionsInOneLine) {
+  const std::string dir = freshDir("tabletop_render_bad");
+  const std::string base = kBin + "tabletop render " + kScenarios + "example1_single_cube.json --out " + dir;
+  Outcome o = run(base + " --size 12by3");
+  EXPECT_EQ(o.status, 2);
+  EXPECT_EQ(lineCount(o.err), 1) << o.err;
+  EXPECT_NE(o.err.find("--size: expected WxH"), std::string::npos) << o.err;
+  o = run(base + " --video out.avi");
+  EXPECT_EQ(o.status, 2);
+  EXPECT_NE(o.err.find("--video: expected a file name ending in .mp4 or .gif"), std::string::npos) << o.err;
+  o = run(base + " --camera ceiling");
+  EXPECT_EQ(o.status, 2);
+  o = run(base + " --at 1 --fps 5");
+  EXPECT_EQ(o.status, 2) << "--at and --fps exclude each other";
+  EXPECT_FALSE(std::filesystem::exists(dir)) << "nothing is made for a refused command";
+}
+
+// No display: one line that says so and points to render, not a crash
+// inside glutInit.
+TEST(CommandLine, ViewWithoutADisplaySaysSoInOneLine) {
+  for (const std::string env : {"env -u DISPLAY ", "env DISPLAY=:4242 "}) {
+    const Outcome o = run(env + kBin + "tabletop view " + kScenarios + "example1_single_cube.json");
+    EXPECT_EQ(o.status, 1) << env;
+    EXPECT_EQ(lineCount(o.err), 1) << o.err;
+    EXPECT_NE(o.err.find("needs a display"), std::string::npos) << o.err;
+    EXPECT_NE(o.err.find("tabletop render"), std::string::npos) << o.err;
+  }
 }
 
 }  // namespace
