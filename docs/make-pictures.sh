@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Regenerates the README's pictures with `tabletop render` (headless; the
+# GIF needs ffmpeg). Usage, after building: docs/make-pictures.sh [TABLETOP]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+tabletop=${1:-build/src/app/tabletop}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+# still NAME TIME: the example at TIME seconds, seen from the table's corner.
+still() {
+  "$tabletop" render "scenarios/$1.json" --out "$work/$1" --at "$2" --size 640x480 --camera corner
+  cp "$work/$1/t_$(printf '%.3f' "$2").png" "docs/$1.png"
+}
+
+still example1_single_cube 1.6
+still example2_two_cubes 0.9
+still example3_stacked_cubes 0.6
+still example4_two_spheres 1.0
+"$tabletop" render scenarios/example2_two_cubes.json --out "$work/example2_frames" --fps 20 --size 480x360 \
+  --camera corner --video docs/example2_two_cubes.gif
