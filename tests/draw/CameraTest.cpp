@@ -1,0 +1,86 @@
+// The camera against the pinhole model's closed form, and the arrow's
+// place on its face.
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "draw/Camera.h"
+#include "draw/SceneDrawing.h"
+
+namespace tabletop {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// The target lands in the image's centre; a point h metres above it, on a
+// view looking straight along -Z, lands f h / d pixels higher, with the
+// focal length f = (H / 2) / tan(fovy / 2) (to 1e-9 px).
+TEST(Camera, ProjectsLikeAPinhole) {
+  Camera c;
+  c.target = {0.3, 0.5, -0.2};
+  c.yawDegrees = 0.0, c.pitchDegrees = 0.0, c.distance = 2.0, c.fovyDegrees = 40.0;
+  const auto centre = c.project(c.target, 640, 480);
+  ASSERT_TRUE(centre);
+  EXPECT_NEAR(centre->column, 320.0, 1e-9);
+  EXPECT_NEAR(centre->row, 240.0, 1e-9);
+  EXPECT_NEAR(centre->depth, 2.0, 1e-12);
+  const double f = 240.0 / std::tan(20.0 * kPi / 180.0);
+  const auto up = c.project(c.target + Vec3{0.1, 0.2, 0.0}, 640, 480);
+  ASSERT_TRUE(up);
+  EXPECT_NEAR(up->row, 240.0 - f * 0.2 / 2.0, 1e-9);
+  EXPECT_NEAR(up->column, 320.0 + f * 0.1 / 2.0, 1e-9);
+  EXPECT_FALSE(c.project(c.eye() + Vec3{0, 0, 1.0}, 640, 480)) << "behind the eye";
+}
+
+TEST(Camera, OrbitKeepsTheDistanceAndPitchStaysBelowTheVertical) {
+  Camera c;
+  c.orbit(30.0, 100.0);
+  EXPECT_NEAR(c.pitchDegrees, 89.0, 1e-12);
+  EXPECT_NEAR((c.eye() - c.target).length(), c.distance, 1e-12);
+  EXPECT_NEAR(c.yawDegrees, 30.0, 1e-12);
+}
+
+TEST(Camera, NamedViewsFrameTheTable) {
+  TableSpec table;
+  for (const std::string& name : Camera::names()) {
+    const auto c = Camera::named(name, table);
+    ASSERT_TRUE(c) << name;
+    for (double x : {-0.5 * table.width, 0.5 * table.width}) {
+      for (double z : {-0.5 * table.depth, 0.5 * table.depth}) {
+        const auto p = c->project({x, table.height, z}, 640, 480);
+        ASSERT_TRUE(p) << name;
+        EXPECT_TRUE(p->column > 0 && p->column < 640 && p->row > 0 && p->row < 480)
+            << name << ": a table corner is out of the picture";
+      }
+    }
+  }
+  EXPECT_FALSE(Camera::named("ceiling", table));
+}
+
+// The arrow's head stops 5 mm short of the pushed face: for a cube of side
+// s pushed on its Left face, at x - s/2 - 0.005, pointing +X.
+TEST(SceneDrawing, ArrowHeadTouchesThePushedFace) {
+  EntitySpec cube;
+  cube.name = "A";
+  cube.shape = ShapeKind::Cube;
+  cube.size = {0.1};
+  EntityState state;
+  state.position = {0.2, 0.8, -0.1};
+  Arrow arrow;
+  arrow.entity = "A";
+  arrow.face = DirectionDef::Left;
+  const DrawArrow a = arrowFor(arrow, cube, state);
+  EXPECT_NEAR(a.head.x, 0.2 - 0.05 - 0.005, 1e-12);
+  EXPECT_NEAR(a.head.z, -0.1, 1e-12);
+  EXPECT_NEAR(a.head.y, 0.8, 1e-12);
+  EXPECT_LT(a.tail.x, a.head.x);
+  // Turned by 90 degrees, the Left face looks along -Z (report 3.8: Z' = Z - Step sin(Angle)).
+  state.yawDegrees = 90.0;
+  const DrawArrow turned = arrowFor(arrow, cube, state);
+  EXPECT_NEAR(turned.head.z, -0.1 + 0.05 + 0.005, 1e-9);
+  EXPECT_GT(turned.tail.z, turned.head.z);
+}
+
+}  // namespace
+}  // namespace tabletop
