@@ -116,15 +116,9 @@ int renderScenario(const RenderOptions& options, std::ostream& out, std::ostream
     err << "tabletop render: --size: expected WxH with each side 1..8192 pixels, got '" << options.size << "'\n";
     return kExitBadInput;
   }
-  if (options.video && options.video->size() < 5) {
-    err << "tabletop render: --video: expected a file name ending in .mp4 or .gif, got '" << *options.video << "'\n";
-    return kExitBadInput;
-  }
   if (options.video) {
-    const std::string& v = *options.video;
-    const std::string ext = v.substr(v.size() - 4);
-    if (ext != ".mp4" && ext != ".gif") {
-      err << "tabletop render: --video: expected a file name ending in .mp4 or .gif, got '" << v << "'\n";
+    if (const auto problem = videoNameProblem(*options.video)) {
+      err << "tabletop render: " << *problem << "\n";
       return kExitBadInput;
     }
   }

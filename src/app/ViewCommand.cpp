@@ -31,8 +31,7 @@ int viewScenario(const ViewOptions& options, std::ostream& err) {
   // A missing display is said before the scenario is even read.
   const std::string problem = displayProblem();
   if (!problem.empty()) {
-    err << "tabletop view: needs a display (" << problem
-        << "); to make pictures without one use: tabletop render SCENARIO --out DIR\n";
+    err << noDisplayMessage(problem) << "\n";
     return kExitFailure;
   }
   try {

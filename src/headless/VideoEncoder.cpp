@@ -55,6 +55,11 @@ std::string lastLine(const std::string& path) {
 
 }  // namespace
 
+std::optional<std::string> videoNameProblem(const std::string& out) {
+  if (endsWith(out, ".mp4") || endsWith(out, ".gif")) return std::nullopt;
+  return "--video: expected a file name ending in .mp4 or .gif, got '" + out + "'";
+}
+
 bool ffmpegAvailable() {
   const char* path = std::getenv("PATH");
   std::stringstream dirs(path ? path : "");
@@ -77,7 +82,7 @@ std::optional<std::string> encodeVideo(const std::string& framePattern, double f
     args.insert(args.end(), {"-filter_complex", "[0:v]split[a][b];[a]palettegen=stats_mode=full[p];[b][p]paletteuse",
                              "-f", "gif"});
   } else {
-    return "--video: expected a file name ending in .mp4 or .gif, got '" + out + "'";
+    return videoNameProblem(out);
   }
   if (!ffmpegAvailable()) return "ffmpeg is not installed, so no video was made (apt-get install ffmpeg)";
   const std::string temporary = out + ".part";

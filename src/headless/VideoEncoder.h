@@ -5,6 +5,9 @@
 
 namespace tabletop {
 
+/// Why `out` cannot name a video (it must end in .mp4 or .gif), or empty.
+std::optional<std::string> videoNameProblem(const std::string& out);
+
 /// True when an `ffmpeg` executable is on the PATH.
 bool ffmpegAvailable();
 

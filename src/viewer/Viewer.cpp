@@ -283,11 +283,15 @@ std::string displayProblem() {
   return {};
 }
 
+std::string noDisplayMessage(const std::string& problem) {
+  return "tabletop view: needs a display (" + problem +
+         "); to make pictures without one use: tabletop render SCENARIO --out DIR";
+}
+
 int runViewer(ViewerSession& session, const WindowSettings& settings, std::ostream& err) {
   const std::string problem = displayProblem();
   if (!problem.empty()) {
-    err << "tabletop view: needs a display (" << problem
-        << "); to make pictures without one use: tabletop render SCENARIO --out DIR\n";
+    err << noDisplayMessage(problem) << "\n";
     return 1;
   }
   int argc = 1;

@@ -27,4 +27,7 @@ int runViewer(ViewerSession& session, const WindowSettings& window, std::ostream
 /// or empty when one can.
 std::string displayProblem();
 
+/// The one line `tabletop view` prints when there is no display.
+std::string noDisplayMessage(const std::string& problem);
+
 }  // namespace tabletop
