@@ -12,7 +12,7 @@
 
 #include "draw/Camera.h"
 #include "draw/SceneDrawing.h"
-#include "headless/OffscreenContext.h"
+#include "headless/OsMesaContext.h"
 #include "headless/VideoEncoder.h"
 #include "image/PngFile.h"
 #include "render/GlRenderer.h"
@@ -77,7 +77,7 @@ class FrameMaker {
   Camera camera_;
   std::unique_ptr<Simulation> simulation_;
   ScriptPlayer player_;
-  OffscreenContext context_;
+  OsMesaContext context_;
   GlRenderer renderer_;
 };
 

@@ -11,7 +11,7 @@
 
 #include "draw/Camera.h"
 #include "draw/SceneDrawing.h"
-#include "headless/OffscreenContext.h"
+#include "headless/OsMesaContext.h"
 #include "render/GlRenderer.h"
 #include "scenario/ScenarioLoader.h"
 #include "sim/SceneBuilder.h"
@@ -47,7 +47,7 @@ class Scene {
   double time() const { return simulation_->time(); }
 
   Image render(const Camera& camera, bool arrow = true, int width = kWidth, int height = kHeight) {
-    OffscreenContext context(width, height);
+    OsMesaContext context(width, height);
     GlRenderer renderer(context.gl());
     DrawOptions options;
     options.arrow = arrow;
@@ -176,7 +176,7 @@ TEST(HeadlessRender, ImageHasTheSizeAskedFor) {
   EXPECT_EQ(image.width, 321);
   EXPECT_EQ(image.height, 123);
   EXPECT_EQ(image.rgb.size(), 321u * 123u * 3u);
-  EXPECT_THROW(OffscreenContext(0, 10), std::runtime_error);
+  EXPECT_THROW(OsMesaContext(0, 10), std::runtime_error);
 }
 
 // OpenGL's rows start at the bottom: the sky must come out at the top.

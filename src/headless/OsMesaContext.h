@@ -13,13 +13,13 @@ namespace tabletop {
 /// stencil buffer, current while this object lives. Its GL functions come
 /// from OSMesaGetProcAddress, so they reach this context however the
 /// executable was linked (see GlFunctions).
-class OffscreenContext {
+class OsMesaContext {
  public:
   /// Throws std::runtime_error when OSMesa cannot make the context.
-  OffscreenContext(int width, int height);
-  ~OffscreenContext();
-  OffscreenContext(const OffscreenContext&) = delete;
-  OffscreenContext& operator=(const OffscreenContext&) = delete;
+  OsMesaContext(int width, int height);
+  ~OsMesaContext();
+  OsMesaContext(const OsMesaContext&) = delete;
+  OsMesaContext& operator=(const OsMesaContext&) = delete;
 
   int width() const { return width_; }
   int height() const { return height_; }

@@ -1,4 +1,4 @@
-#include "headless/OffscreenContext.h"
+#include "headless/OsMesaContext.h"
 
 #include <GL/osmesa.h>
 #include <dlfcn.h>
@@ -47,12 +47,12 @@ OsMesa openOsMesa() {
 
 }  // namespace
 
-struct OffscreenContext::Handle {
+struct OsMesaContext::Handle {
   OsMesa osmesa;
   OSMesaContext context = nullptr;
 };
 
-OffscreenContext::OffscreenContext(int width, int height)
+OsMesaContext::OsMesaContext(int width, int height)
     : width_(width), height_(height), handle_(std::make_unique<Handle>()) {
   constexpr int kMaxSide = 8192;  // OSMesa's limit on either side
   if (width <= 0 || height <= 0 || width > kMaxSide || height > kMaxSide) {
@@ -73,7 +73,7 @@ OffscreenContext::OffscreenContext(int width, int height)
   gl_ = GlFunctions::load([getProcAddress](const char* name) { return reinterpret_cast<void*>(getProcAddress(name)); });
 }
 
-OffscreenContext::~OffscreenContext() {
+OsMesaContext::~OsMesaContext() {
   // The library stays loaded: Mesa keeps per-thread state that a dlclose
   // would leave dangling.
   if (handle_->context) handle_->osmesa.destroyContext(handle_->context);
