@@ -124,14 +124,22 @@ int renderScenario(const RenderOptions& options, std::ostream& out, std::ostream
     }
   }
 
+  // The scene and the context come first: a bad scene is refused before
+  // any directory or file is made.
+  const auto start = std::chrono::steady_clock::now();
   Settings settings;
   Scenario scenario;
+  std::unique_ptr<FrameMaker> maker;
   try {
     scenario = loadScenario(options.run.scenarios.front(), options.run, settings);
-    buildSimulation(scenario, settings, options.run.mode);  // refuses bad scenes before any file is made
+    maker = std::make_unique<FrameMaker>(scenario, settings, options, *Camera::named(options.camera, scenario.table),
+                                         size->first, size->second);
   } catch (const ScenarioError& e) {
     for (const std::string& line : e.lines()) err << line << "\n";
     return kExitBadInput;
+  } catch (const std::runtime_error& e) {
+    err << "tabletop render: " << e.what() << "\n";
+    return kExitFailure;
   }
 
   std::error_code ec;
@@ -142,18 +150,15 @@ int renderScenario(const RenderOptions& options, std::ostream& out, std::ostream
     return kExitFailure;
   }
 
-  const auto start = std::chrono::steady_clock::now();
-  const Camera camera = *Camera::named(options.camera, scenario.table);
   const std::filesystem::path dir(options.outDir);
   long frames = 0;
   try {
-    FrameMaker maker(scenario, settings, options, camera, size->first, size->second);
     if (!options.at.empty()) {
       std::vector<double> times = options.at;
       std::sort(times.begin(), times.end());
       times.erase(std::unique(times.begin(), times.end()), times.end());
       for (double t : times) {
-        maker.frameAt(t, (dir / stillName(t)).string());
+        maker->frameAt(t, (dir / stillName(t)).string());
         ++frames;
       }
     } else {
@@ -162,9 +167,9 @@ int renderScenario(const RenderOptions& options, std::ostream& out, std::ostream
       }
       double end = std::numeric_limits<double>::infinity();
       for (long k = 0; k / options.fps <= end + kTimeSlack; ++k) {
-        maker.frameAt(k / options.fps, (dir / frameName(k)).string());
+        maker->frameAt(k / options.fps, (dir / frameName(k)).string());
         ++frames;
-        if (maker.finished() && !std::isfinite(end)) end = maker.time() + kHoldSeconds;
+        if (maker->finished() && !std::isfinite(end)) end = maker->time() + kHoldSeconds;
       }
     }
   } catch (const ScenarioError& e) {

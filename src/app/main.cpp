@@ -10,6 +10,24 @@
 #include "app/RunCommand.h"
 #include "app/ViewCommand.h"
 
+namespace {
+
+// A subcommand on one scenario file with run's options (--json, the
+// setting overrides, and --mode when `withMode`).
+CLI::App* addScenarioCommand(CLI::App& app, const std::string& name, const std::string& help,
+                             tabletop::RunOptions& run, bool withMode = true) {
+  CLI::App* command = app.add_subcommand(name, help);
+  command
+      ->add_option_function<std::string>(
+          "SCENARIO", [&run](const std::string& file) { run.scenarios.push_back({file, std::nullopt}); },
+          "Scenario file (JSON)")
+      ->required();
+  tabletop::addRunOptions(*command, run, withMode);
+  return command;
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   using namespace tabletop;
   CLI::App app{
@@ -30,42 +48,27 @@ int main(int argc, char** argv) {
   });
 
   CompareOptions compare;
-  std::string compareFile;
-  CLI::App* compareCommand = app.add_subcommand(
-      "compare", "Run a scenario in the rules, compat and bullet modes and say where and why they differ");
-  compareCommand->add_option("SCENARIO", compareFile, "Scenario file (JSON)")->required();
-  addRunOptions(*compareCommand, compare.run, false);
+  CLI::App* compareCommand = addScenarioCommand(
+      app, "compare", "Run a scenario in the rules, compat and bullet modes and say where and why they differ",
+      compare.run, false);
   compareCommand->add_option("--plot", compare.plot, "Write a top view of the trajectories (FILE.png or FILE.svg)");
-  compareCommand->callback([&] {
-    compare.run.scenarios.push_back({compareFile, std::nullopt});
-    status = compareScenario(compare, std::cout, std::cerr);
-  });
+  compareCommand->callback([&] { status = compareScenario(compare, std::cout, std::cerr); });
 
   RenderOptions render;
-  std::string renderFile;
-  CLI::App* renderCommand = app.add_subcommand(
-      "render", "Render a scenario without a display (OSMesa) to PNG frames, and with --video to MP4 or GIF");
-  renderCommand->add_option("SCENARIO", renderFile, "Scenario file (JSON)")->required();
-  addRunOptions(*renderCommand, render.run);
+  CLI::App* renderCommand = addScenarioCommand(
+      app, "render", "Render a scenario without a display (OSMesa) to PNG frames, and with --video to MP4 or GIF",
+      render.run);
   renderCommand->remove_option(renderCommand->get_option("--json"));
   addRenderOptions(*renderCommand, render);
-  renderCommand->callback([&] {
-    render.run.scenarios.push_back({renderFile, std::nullopt});
-    status = renderScenario(render, std::cout, std::cerr);
-  });
+  renderCommand->callback([&] { status = renderScenario(render, std::cout, std::cerr); });
 
   ViewOptions view;
-  std::string viewFile;
-  CLI::App* viewCommand = app.add_subcommand(
-      "view", "Open the report's window on a scenario: watch it, push entities with the keyboard (H: help)");
-  viewCommand->add_option("SCENARIO", viewFile, "Scenario file (JSON)")->required();
-  addRunOptions(*viewCommand, view.run);
+  CLI::App* viewCommand = addScenarioCommand(
+      app, "view", "Open the report's window on a scenario: watch it, push entities with the keyboard (H: help)",
+      view.run);
   viewCommand->remove_option(viewCommand->get_option("--json"));
   addViewOptions(*viewCommand, view);
-  viewCommand->callback([&] {
-    view.run.scenarios.push_back({viewFile, std::nullopt});
-    status = viewScenario(view, std::cerr);
-  });
+  viewCommand->callback([&] { status = viewScenario(view, std::cerr); });
 
   try {
     return parseAndRun(app, argc, argv, status);
