@@ -24,11 +24,11 @@ void addRunOptions(CLI::App& command, RunOptions& options, bool withMode) {
         ->transform(CLI::CheckedTransformer(modes));
   }
   command.add_option("--timestep", options.timestep, "Fixed timestep in seconds (overrides the scenario)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(kMinTimestep, kMaxTimestep));
   command.add_option("--iterations", options.iterations, "Solver iterations per step (overrides the scenario)")
       ->check(CLI::Range(1, 10000));
   command.add_option("--duration", options.duration, "Longest simulated time in seconds (overrides the scenario)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::PositiveNumber & CLI::Range(0.0, 3600.0));
 }
 
 Scenario loadScenario(const ScenarioSource& source, const RunOptions& options, Settings& settings) {
@@ -38,6 +38,8 @@ Scenario loadScenario(const ScenarioSource& source, const RunOptions& options, S
   if (options.timestep) settings.timestep = *options.timestep;
   if (options.iterations) settings.iterations = *options.iterations;
   if (options.duration) settings.duration = *options.duration;
+  const std::string tooLong = ScenarioLoader::stepCountProblem(settings);
+  if (!tooLong.empty()) throw ScenarioError(source.name, {{"/settings", tooLong + " with the command line's settings"}});
   return scenario;
 }
 

@@ -2,6 +2,14 @@
 
 namespace tabletop {
 
+/// The timesteps and run lengths every mode accepts: a step from 10 us to
+/// 0.1 s, and at most kMaxSteps steps in one run (about 12 hours of wall
+/// time at the slowest settings, so a typo cannot start a run that never
+/// ends).
+inline constexpr double kMinTimestep = 1e-5;
+inline constexpr double kMaxTimestep = 0.1;
+inline constexpr double kMaxSteps = 1e7;
+
 /// How a scene is stepped. Every mode reads the same settings; defaults are
 /// documented in scenarios/README.md.
 struct Settings {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -19,27 +20,48 @@ using nlohmann::json;
 
 constexpr int kVersion = 1;
 
-enum class Range { Finite, Positive, NonNegative, UnitInterval };
+// The numbers a field accepts. Every quantity has bounds that keep Bullet
+// meaningful in double precision and a run finite in time: nothing smaller
+// than a millimetre or larger than a kilometre, no mass ratio beyond 1e9, no
+// more than kMaxSteps steps.
+struct Range {
+  double lo;
+  double hi;
+  bool loOpen;  ///< lo itself is refused (a positive quantity)
+};
 
-const char* rangeText(Range r) {
-  switch (r) {
-    case Range::Finite: return "a finite number";
-    case Range::Positive: return "a positive number";
-    case Range::NonNegative: return "a non-negative number";
-    case Range::UnitInterval: return "a number from 0 to 1";
-  }
-  return "a number";
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr Range kFinite{-kInf, kInf, false};
+constexpr Range kPositive{0.0, kInf, true};
+constexpr Range kNonNegative{0.0, kInf, false};
+constexpr Range kUnitInterval{0.0, 1.0, false};
+constexpr Range kLength{1e-3, 1e3, false};        ///< metres: sizes, the table
+constexpr Range kCoordinate{-1e4, 1e4, false};    ///< metres from the origin
+constexpr Range kMass{1e-4, 1e5, false};          ///< kg
+constexpr Range kAngle{-1e6, 1e6, false};         ///< degrees
+constexpr Range kFriction{0.0, 10.0, false};
+constexpr Range kTimestep{kMinTimestep, kMaxTimestep, false};  ///< seconds
+constexpr Range kTime{0.0, 3600.0, false};        ///< seconds
+constexpr Range kSpan{0.0, 3600.0, true};         ///< seconds, positive
+constexpr Range kGravity{0.0, 100.0, false};      ///< m/s^2
+constexpr Range kStep{0.0, 100.0, true};          ///< metres
+constexpr Range kImpulse{0.0, 1e6, true};         ///< N s
+
+std::string number(double v) {
+  std::ostringstream o;
+  o << v;
+  return o.str();
 }
 
-bool inRange(double v, Range r) {
-  if (!std::isfinite(v)) return false;
-  switch (r) {
-    case Range::Finite: return true;
-    case Range::Positive: return v > 0.0;
-    case Range::NonNegative: return v >= 0.0;
-    case Range::UnitInterval: return v >= 0.0 && v <= 1.0;
-  }
-  return false;
+std::string rangeText(const Range& r) {
+  if (r.lo == -kInf && r.hi == kInf) return "a finite number";
+  if (r.hi == kInf) return r.loOpen ? "a positive number" : "a non-negative number";
+  if (r.loOpen && r.lo == 0.0) return "a positive number up to " + number(r.hi);
+  return "a number from " + number(r.lo) + " to " + number(r.hi);
+}
+
+bool inRange(double v, const Range& r) {
+  return std::isfinite(v) && (r.loOpen ? v > r.lo : v >= r.lo) && v <= r.hi;
 }
 
 std::string shown(const json& j) {
@@ -74,15 +96,19 @@ class Fields {
 
   bool has(const std::string& key) const { return valid() && j_.contains(key); }
 
-  double number(const std::string& key, Range range, double fallback, bool required = false) {
+  double number(const std::string& key, const Range& range, double fallback, bool required = false) {
     const json* v = get(key, required);
     if (!v) return fallback;
     return checkNumber(*v, at(key), range, fallback);
   }
 
-  double checkNumber(const json& v, const std::string& path, Range range, double fallback) {
+  double checkNumber(const json& v, const std::string& path, const Range& range, double fallback) {
     if (!v.is_number() || !inRange(v.get<double>(), range)) {
-      fail(path, std::string("expected ") + rangeText(range) + ", got " + shown(v));
+      // A sign error is named as such; a wrong magnitude gets the bounds.
+      const bool positive = range.lo > 0.0 || (range.lo == 0.0 && range.loOpen);
+      const bool signWrong = positive && v.is_number() && v.get<double>() <= 0.0;
+      fail(path, "expected " + (signWrong ? std::string("a positive number") : rangeText(range)) + ", got " +
+                     shown(v));
       return fallback;
     }
     return v.get<double>();
@@ -110,7 +136,7 @@ class Fields {
 
   // A fixed-length array of numbers; empty on error.
   std::vector<double> numbers(const json& v, const std::string& path, std::size_t minCount,
-                              std::size_t maxCount, Range range) {
+                              std::size_t maxCount, const Range& range) {
     const std::string what = minCount == maxCount
                                  ? "an array of " + std::to_string(minCount) + " numbers"
                                  : "an array of " + std::to_string(minCount) + " to " +
@@ -148,13 +174,13 @@ Material readMaterial(Fields& parent, const std::string& key, Material m,
   const json* v = parent.get(key, false);
   if (!v) return m;
   Fields f(*v, parent.at(key), problems);
-  m.friction = f.number("friction", Range::NonNegative, m.friction);
-  m.rollingFriction = f.number("rolling_friction", Range::NonNegative, m.rollingFriction);
+  m.friction = f.number("friction", kFriction, m.friction);
+  m.rollingFriction = f.number("rolling_friction", kFriction, m.rollingFriction);
   // A ball on a table stops spinning too: spinning friction follows rolling
   // friction unless given.
-  m.spinningFriction = f.number("spinning_friction", Range::NonNegative,
+  m.spinningFriction = f.number("spinning_friction", kFriction,
                                 f.has("rolling_friction") ? m.rollingFriction : m.spinningFriction);
-  m.restitution = f.number("restitution", Range::UnitInterval, m.restitution);
+  m.restitution = f.number("restitution", kUnitInterval, m.restitution);
   f.finish();
   return m;
 }
@@ -162,7 +188,7 @@ Material readMaterial(Fields& parent, const std::string& key, Material m,
 Colour readColour(Fields& parent, const std::string& key, Colour c) {
   const json* v = parent.get(key, false);
   if (!v) return c;
-  const std::vector<double> rgb = parent.numbers(*v, parent.at(key), 3, 3, Range::NonNegative);
+  const std::vector<double> rgb = parent.numbers(*v, parent.at(key), 3, 3, kNonNegative);
   if (rgb.size() != 3) return c;
   for (std::size_t i = 0; i < 3; ++i) {
     if (rgb[i] > 255.0 || rgb[i] != std::floor(rgb[i])) {
@@ -178,17 +204,17 @@ TableSpec readTable(const json& j, std::vector<Problem>& problems) {
   TableSpec t;
   Fields f(j, "/table", problems);
   if (const json* size = f.get("size", false)) {
-    const auto wd = f.numbers(*size, f.at("size"), 2, 2, Range::Positive);
+    const auto wd = f.numbers(*size, f.at("size"), 2, 2, kLength);
     if (wd.size() == 2) {
       t.width = wd[0];
       t.depth = wd[1];
     }
   }
-  t.height = f.number("height", Range::Positive, t.height);
-  t.thickness = f.number("thickness", Range::Positive, t.thickness);
-  t.legRadius = f.number("leg_radius", Range::Positive, t.legRadius);
+  t.height = f.number("height", kLength, t.height);
+  t.thickness = f.number("thickness", kLength, t.thickness);
+  t.legRadius = f.number("leg_radius", kLength, t.legRadius);
   if (const json* centre = f.get("centre", false)) {
-    const auto xz = f.numbers(*centre, f.at("centre"), 2, 2, Range::Finite);
+    const auto xz = f.numbers(*centre, f.at("centre"), 2, 2, kCoordinate);
     if (xz.size() == 2) {
       t.centreX = xz[0];
       t.centreZ = xz[1];
@@ -209,7 +235,7 @@ TableSpec readTable(const json& j, std::vector<Problem>& problems) {
 Settings readSettings(const json& j, std::vector<Problem>& problems) {
   Settings s;
   Fields f(j, "/settings", problems);
-  s.timestep = f.number("timestep", Range::Positive, s.timestep);
+  s.timestep = f.number("timestep", kTimestep, s.timestep);
   if (const json* it = f.get("iterations", false)) {
     if (!it->is_number_integer() || it->get<long long>() < 1 || it->get<long long>() > 10000) {
       f.fail(f.at("iterations"), "expected an integer from 1 to 10000, got " + shown(*it));
@@ -217,11 +243,15 @@ Settings readSettings(const json& j, std::vector<Problem>& problems) {
       s.iterations = it->get<int>();
     }
   }
-  s.duration = f.number("duration", Range::Positive, s.duration);
-  s.gravity = f.number("gravity", Range::NonNegative, s.gravity);
+  s.duration = f.number("duration", kSpan, s.duration);
+  s.gravity = f.number("gravity", kGravity, s.gravity);
   s.endAtRest = f.boolean("end_at_rest", s.endAtRest);
   s.sleeping = f.boolean("sleeping", s.sleeping);
   f.finish();
+  if (f.valid()) {
+    const std::string tooLong = ScenarioLoader::stepCountProblem(s);
+    if (!tooLong.empty()) f.fail("/settings/duration", tooLong);
+  }
   return s;
 }
 
@@ -259,16 +289,16 @@ EntitySpec readEntity(const json& j, const std::string& path, const std::vector<
   if (const json* size = f.get("size", true); size && shapeKnown) {
     const std::size_t n = sizeCount(e.shape);
     if (n == 1) {
-      const double s = f.checkNumber(*size, f.at("size"), Range::Positive, 0.0);
+      const double s = f.checkNumber(*size, f.at("size"), kLength, 0.0);
       if (s > 0.0) e.size = {s};
     } else {
-      e.size = f.numbers(*size, f.at("size"), 3, 3, Range::Positive);
+      e.size = f.numbers(*size, f.at("size"), 3, 3, kLength);
     }
   }
 
   e.on = f.has("on") ? f.string("on", "") : "";
   if (const json* pos = f.get("position", true)) {
-    const auto p = f.numbers(*pos, f.at("position"), 2, 3, Range::Finite);
+    const auto p = f.numbers(*pos, f.at("position"), 2, 3, kCoordinate);
     if (p.size() == 3) {
       e.position = {p[0], p[1], p[2]};
       if (!e.on.empty()) f.fail(f.at("on"), "expected no 'on' when the position gives a height [x, y, z]");
@@ -286,9 +316,9 @@ EntitySpec readEntity(const json& j, const std::string& path, const std::vector<
     }
   }
 
-  e.yawDegrees = f.number("yaw", Range::Finite, 0.0);
+  e.yawDegrees = f.number("yaw", kAngle, 0.0);
   e.colour = readColour(f, "colour", e.colour);
-  e.mass = f.number("mass", Range::Positive, e.mass, true);
+  e.mass = f.number("mass", kMass, e.mass, true);
   e.material = readMaterial(f, "material", e.material, problems);
   f.finish();
   return e;
@@ -299,7 +329,7 @@ Action readAction(const json& j, const std::string& path, const std::vector<Enti
   Action a;
   a.path = path;
   Fields f(j, path, problems);
-  if (f.has("t")) a.at = f.number("t", Range::NonNegative, 0.0);
+  if (f.has("t")) a.at = f.number("t", kTime, 0.0);
 
   auto checkEntity = [&](Fields& g, const std::string& name) {
     if (name.empty()) return;
@@ -328,12 +358,12 @@ Action readAction(const json& j, const std::string& path, const std::vector<Enti
         p.fail(p.at("direction"), "expected one of Left, Right, Front, Back, got \"" + d + "\"");
       }
     }
-    if (byAngle) a.arrow.angleDegrees = p.number("angle", Range::Finite, 0.0);
+    if (byAngle) a.arrow.angleDegrees = p.number("angle", kAngle, 0.0);
     const bool byStep = p.has("step"), byImpulse = p.has("impulse");
     if (p.valid() && byStep == byImpulse) p.fail(f.at("push"), "expected exactly one of 'step', 'impulse'");
-    if (byStep) a.magnitude = {PushMagnitude::Kind::Step, p.number("step", Range::Positive, 0.0)};
+    if (byStep) a.magnitude = {PushMagnitude::Kind::Step, p.number("step", kStep, 0.0)};
     if (byImpulse) {
-      a.magnitude = {PushMagnitude::Kind::Impulse, p.number("impulse", Range::Positive, 0.0)};
+      a.magnitude = {PushMagnitude::Kind::Impulse, p.number("impulse", kImpulse, 0.0)};
     }
     p.finish();
   }
@@ -342,22 +372,35 @@ Action readAction(const json& j, const std::string& path, const std::vector<Enti
     Fields r(*rotate, f.at("rotate"), problems);
     a.entity = r.string("entity", "", true);
     checkEntity(r, a.entity);
-    a.degrees = r.number("angle", Range::Finite, 0.0, true);
+    a.degrees = r.number("angle", kAngle, 0.0, true);
     r.finish();
   }
   if (const json* wait = f.get("wait", false)) {
     if (wait->is_string() && wait->get<std::string>() == "rest") {
       a.type = Action::Type::WaitRest;
-      a.seconds = f.number("timeout", Range::Positive, 0.0);
+      a.seconds = f.number("timeout", kSpan, 0.0);
     } else if (wait->is_number()) {
       a.type = Action::Type::WaitTime;
-      a.seconds = f.checkNumber(*wait, f.at("wait"), Range::Positive, 0.0);
+      a.seconds = f.checkNumber(*wait, f.at("wait"), kSpan, 0.0);
     } else {
       f.fail(f.at("wait"), "expected \"rest\" or a positive number of seconds, got " + shown(*wait));
     }
   }
   f.finish();
   return a;
+}
+
+// An entity set on the table starts with its centre over the top: one
+// placed beyond an edge would start in mid-air beside the table.
+void checkOverTable(const EntitySpec& e, const TableSpec& t, std::vector<Problem>& problems) {
+  if (e.on != "table") return;
+  const double halfW = 0.5 * t.width, halfD = 0.5 * t.depth;
+  if (std::abs(e.position.x - t.centreX) <= halfW && std::abs(e.position.z - t.centreZ) <= halfD) return;
+  problems.push_back({e.path + "/position", "expected a centre over the table top (x from " +
+                                                number(t.centreX - halfW) + " to " + number(t.centreX + halfW) +
+                                                ", z from " + number(t.centreZ - halfD) + " to " +
+                                                number(t.centreZ + halfD) + " m), got [" + number(e.position.x) +
+                                                ", " + number(e.position.z) + "]"});
 }
 
 Scenario read(const json& root, std::vector<Problem>& problems) {
@@ -386,6 +429,7 @@ Scenario read(const json& root, std::vector<Problem>& problems) {
     } else {
       for (std::size_t i = 0; i < list->size(); ++i) {
         s.entities.push_back(readEntity((*list)[i], "/entities/" + std::to_string(i), s.entities, problems));
+        checkOverTable(s.entities.back(), s.table, problems);
       }
     }
   }
@@ -455,6 +499,12 @@ Problem valueProblem(const json::exception& e, const std::string& text) {
 }
 
 }  // namespace
+
+std::string ScenarioLoader::stepCountProblem(const Settings& settings) {
+  const double steps = std::ceil(settings.duration / settings.timestep);
+  if (steps <= kMaxSteps) return "";
+  return "expected at most " + number(kMaxSteps) + " steps (duration / timestep), got " + number(steps);
+}
 
 Scenario ScenarioLoader::loadText(const std::string& text, const std::string& source) {
   json root;

@@ -16,6 +16,9 @@ class ScenarioLoader {
   static Scenario loadFile(const std::string& path);
   /// Checks `text`, naming it `source` in errors.
   static Scenario loadText(const std::string& text, const std::string& source);
+  /// Empty when `settings` asks for at most kMaxSteps steps; else what is
+  /// wrong (the command line's overrides are checked with it too).
+  static std::string stepCountProblem(const Settings& settings);
 };
 
 }  // namespace tabletop

@@ -70,6 +70,8 @@ struct BadInput {
   std::string message;
 };
 
+void PrintTo(const BadInput& c, std::ostream* os) { *os << c.name; }
+
 // A scenario with one entity A; `extra` adds fields to it.
 std::string entity(const std::string& extra, const std::string& shape = "\"cube\"",
                    const std::string& size = "0.1", const std::string& mass = "1") {
@@ -141,7 +143,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"PushStepAndImpulse",
                  withScript(R"({"push": {"entity": "A", "direction": "Left", "step": 1, "impulse": 1}})"),
                  "/script/0/push", "exactly one of 'step', 'impulse'"},
-        BadInput{"NegativeTime", withScript(R"({"t": -1, "wait": 1})"), "/script/0/t", "non-negative"},
+        BadInput{"NegativeTime", withScript(R"({"t": -1, "wait": 1})"), "/script/0/t", "expected a number from 0 to 3600, got -1"},
         BadInput{"TimesOutOfOrder", withScript(R"({"t": 2, "wait": 1}, {"t": 1, "wait": 1})"), "/script/1/t",
                  "not before the previous action's"},
         BadInput{"TimeAfterDuration", withScript(R"({"t": 9, "wait": 1})"), "/script/0/t", "within the duration"},
@@ -149,7 +151,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "/script/0", "exactly one of 'push', 'rotate', 'wait'"},
         BadInput{"ZeroTimestep", R"({"version": 1, "name": "t", "settings": {"timestep": 0},
                    "entities": [{"name": "A", "shape": "cube", "size": 0.1, "position": [0, 0], "mass": 1}]})",
-                 "/settings/timestep", "positive number"},
+                 "/settings/timestep", "expected a positive number, got 0"},
         BadInput{"UnknownTopLevelKey", R"({"version": 1, "name": "t", "entitys": [],
                    "entities": [{"name": "A", "shape": "cube", "size": 0.1, "position": [0, 0], "mass": 1}]})",
                  "/entitys", "unknown key 'entitys'"},
@@ -170,7 +172,44 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"DuplicateName", R"({"version": 1, "name": "t", "entities": [
                    {"name": "A", "shape": "cube", "size": 0.1, "position": [0, 0], "mass": 1},
                    {"name": "A", "shape": "cube", "size": 0.1, "position": [0.3, 0], "mass": 1}]})",
-                 "/entities/1/name", "unique name"}),
+                 "/entities/1/name", "unique name"},
+        // Ranges that keep a run meaningful and finite in time.
+        BadInput{"TimestepTooLarge", R"({"version": 1, "name": "t", "settings": {"timestep": 0.5},
+                   "entities": [{"name": "A", "shape": "cube", "size": 0.1, "position": [0, 0], "mass": 1}]})",
+                 "/settings/timestep", "expected a number from 1e-05 to 0.1, got 0.5"},
+        BadInput{"TooManySteps", R"({"version": 1, "name": "t", "settings": {"timestep": 1e-5, "duration": 1000},
+                   "entities": [{"name": "A", "shape": "cube", "size": 0.1, "position": [0, 0], "mass": 1}]})",
+                 "/settings/duration", "expected at most 1e+07 steps (duration / timestep), got 1e+08"},
+        BadInput{"DurationBeyondAnHour", R"({"version": 1, "name": "t", "settings": {"duration": 1e5},
+                   "entities": [{"name": "A", "shape": "cube", "size": 0.1, "position": [0, 0], "mass": 1}]})",
+                 "/settings/duration", "expected a positive number up to 3600, got 100000.0"},
+        BadInput{"GravityTooStrong", R"({"version": 1, "name": "t", "settings": {"gravity": 1000},
+                   "entities": [{"name": "A", "shape": "cube", "size": 0.1, "position": [0, 0], "mass": 1}]})",
+                 "/settings/gravity", "expected a number from 0 to 100, got 1000"},
+        BadInput{"SizeBelowAMillimetre", entity("", "\"cube\"", "1e-6"), "/entities/0/size",
+                 "expected a number from 0.001 to 1000, got 1e-06"},
+        BadInput{"MassTooLarge", entity("", "\"cube\"", "0.1", "1e9"), "/entities/0/mass",
+                 "expected a number from 0.0001 to 100000, got 1000000000.0"},
+        BadInput{"FrictionTooLarge", entity(R"(, "material": {"friction": 50})"), "/entities/0/material/friction",
+                 "expected a number from 0 to 10, got 50"},
+        BadInput{"PositionFarAway", entity("").replace(entity("").find("[0, 0]"), 6, "[0, 1e6, 0]"),
+                 "/entities/0/position/1", "expected a number from -10000 to 10000, got 1000000.0"},
+        BadInput{"OffTheTable", entity("").replace(entity("").find("[0, 0]"), 6, "[0.7, 0]"),
+                 "/entities/0/position", "expected a centre over the table top (x from -0.6 to 0.6"},
+        BadInput{"ImpulseTooLarge", withScript(R"({"push": {"entity": "A", "angle": 0, "impulse": 1e9}})"),
+                 "/script/0/push/impulse", "expected a positive number up to 1e+06, got 1000000000.0"},
+        BadInput{"PushWithoutDirection", withScript(R"({"push": {"entity": "A", "step": 0.1}})"),
+                 "/script/0/push", "expected exactly one of 'direction', 'angle'"},
+        BadInput{"PushNotAnObject", withScript(R"({"push": "A"})"), "/script/0/push", "expected an object"},
+        BadInput{"ScriptNotAnArray", R"({"version": 1, "name": "t", "script": {},
+                   "entities": [{"name": "A", "shape": "cube", "size": 0.1, "position": [0, 0], "mass": 1}]})",
+                 "/script", "expected an array of actions"},
+        BadInput{"SupportListedLater", R"({"version": 1, "name": "t", "entities": [
+                   {"name": "A", "shape": "cube", "size": 0.1, "position": [0, 0], "on": "B", "mass": 1},
+                   {"name": "B", "shape": "cube", "size": 0.1, "position": [0.3, 0], "mass": 1}]})",
+                 "/entities/0/on", "an entity listed before this one"},
+        BadInput{"NameMissing", R"({"version": 1, "entities": [{"name": "A", "shape": "cube", "size": 0.1,
+                   "position": [0, 0], "mass": 1}]})", "", "missing required key 'name'"}),
     [](const ::testing::TestParamInfo<BadInput>& p) { return p.param.name; });
 
 // Every problem is reported, not only the first, each with its own line.
