@@ -8,3 +8,14 @@ target_compile_features(tabletop_options INTERFACE cxx_std_17)
 target_compile_options(tabletop_options INTERFACE
   $<$<CXX_COMPILER_ID:GNU,Clang>:-Wall -Wextra -Wpedantic -Wshadow -ffp-contract=off>
   $<$<AND:$<BOOL:${TABLETOP_WERROR}>,$<CXX_COMPILER_ID:GNU,Clang>>:-Werror>)
+
+# TABLETOP_SANITIZE: AddressSanitizer (with leak checking) and
+# UndefinedBehaviorSanitizer on every tabletop target; any report aborts the
+# test that caused it. TABLETOP_FUZZ adds libFuzzer's coverage
+# instrumentation.
+if(TABLETOP_SANITIZE)
+  set(tabletop_sanitizers -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer)
+  target_compile_options(tabletop_options INTERFACE ${tabletop_sanitizers}
+    $<$<BOOL:${TABLETOP_FUZZ}>:-fsanitize=fuzzer-no-link>)
+  target_link_options(tabletop_options INTERFACE ${tabletop_sanitizers})
+endif()

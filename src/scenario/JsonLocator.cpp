@@ -41,7 +41,8 @@ void JsonLocator::skipSpace() {
     } else if (c == ' ' || c == '\t' || c == '\r') {
       ++pos_;
     } else if (c == '/' && pos_ + 1 < text_.size() && text_[pos_ + 1] == '/') {
-      while (pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
+      // As nlohmann's parser: a line comment ends at either line break.
+      while (pos_ < text_.size() && text_[pos_] != '\n' && text_[pos_] != '\r') ++pos_;
     } else if (c == '/' && pos_ + 1 < text_.size() && text_[pos_ + 1] == '*') {
       pos_ += 2;
       while (pos_ + 1 < text_.size() && !(text_[pos_] == '*' && text_[pos_ + 1] == '/')) {
@@ -94,7 +95,11 @@ void JsonLocator::value(const std::string& pointer) {
         child += std::to_string(index++);
       }
       if (pos_ >= text_.size()) return;
+      const std::size_t before = pos_;
       value(child);
+      // Every element moves on; a text the scan misreads ends the scan
+      // rather than looping (positions are then only approximate).
+      if (pos_ == before) return;
     }
   }
   if (c == '"') {

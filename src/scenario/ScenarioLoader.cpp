@@ -507,6 +507,13 @@ std::string ScenarioLoader::stepCountProblem(const Settings& settings) {
 }
 
 Scenario ScenarioLoader::loadText(const std::string& text, const std::string& source) {
+  // nlohmann's parser stops at a NUL byte as at the end of the text, and
+  // would accept what comes before it.
+  if (const std::size_t nul = text.find('\0'); nul != std::string::npos) {
+    Problem p{"", "not valid JSON: expected text, got a NUL byte"};
+    locate(p, text, nul);
+    throw ScenarioError(source, {p});
+  }
   json root;
   try {
     root = json::parse(text, nullptr, true, /*ignore_comments=*/true);

@@ -111,6 +111,9 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(
         BadInput{"NotJson", "{\"version\": 1,\n  \"name\": }", "", "not valid JSON"},
         BadInput{"NotAnObject", "[1, 2]", "", "expected an object"},
+        // Found by the fuzzer: nlohmann stops at a NUL as at the end, and
+        // the text before it ("|") parsed.
+        BadInput{"NulByte", std::string("// x\n\"|\"\0 {\"version\": 1}", 24), "", "got a NUL byte"},
         BadInput{"WrongVersion", R"({"version": 2, "name": "t", "entities": []})", "/version", "expected 1"},
         BadInput{"NoEntities", R"({"version": 1, "name": "t", "entities": []})", "/entities", "non-empty array"},
         BadInput{"UnknownShape", entity("", "\"pyramid\""), "/entities/0/shape",
