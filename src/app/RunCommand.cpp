@@ -58,6 +58,13 @@ int runScenarios(const RunOptions& options, std::ostream& out, std::ostream& err
     }
   }
   if (failed) return kExitBadInput;
+  int status = kExitOk;
+  for (const RunResult& r : results) {
+    if (!r.complete) {
+      err << r.file << ": " << r.failure << "\n";
+      status = kExitDiverged;
+    }
+  }
 
   if (options.json) {
     if (results.size() == 1) {
@@ -70,7 +77,7 @@ int runScenarios(const RunOptions& options, std::ostream& out, std::ostream& err
   } else {
     for (std::size_t i = 0; i < results.size(); ++i) out << (i ? "\n" : "") << formatText(results[i]);
   }
-  return kExitOk;
+  return status;
 }
 
 int parseAndRun(CLI::App& app, int argc, char** argv, int& status) {

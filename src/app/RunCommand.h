@@ -20,6 +20,8 @@ enum ExitStatus : int {
   kExitOk = 0,
   kExitFailure = 1,   ///< an unexpected failure inside tabletop
   kExitBadInput = 2,  ///< a scenario or command line that cannot be run
+  kExitDiverged = 3,  ///< a run diverged; what it had is printed, marked incomplete
+  kExitInterrupted = 130,  ///< stopped by Ctrl-C (SIGINT) or SIGTERM; outputs completed so far kept
 };
 
 /// A scenario to run: a file, or a text built into the executable.
@@ -48,7 +50,9 @@ Scenario loadScenario(const ScenarioSource& source, const RunOptions& options, S
 
 /// Runs every scenario, then prints all outcomes to `out` (text, or JSON: an
 /// object for one scenario, an array for several). Problems go to `err`,
-/// one line each, and then nothing is printed to `out`.
+/// one line each, and then nothing is printed to `out`. A run that
+/// diverges is printed marked incomplete, its error goes to `err`, and the
+/// status is kExitDiverged.
 int runScenarios(const RunOptions& options, std::ostream& out, std::ostream& err);
 
 /// Parses `argv` with CLI11 and runs `command`'s callback; maps --help to

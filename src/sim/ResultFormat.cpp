@@ -61,6 +61,7 @@ std::string formatText(const RunResult& r) {
   out << "  mode " << r.mode << ", timestep " << fixed(r.settings.timestep, 6) << " s, "
       << r.settings.iterations << " iterations; simulated " << fixed(r.simTime, 3) << " s in "
       << r.steps << " steps (" << fixed(r.wallSeconds, 3) << " s wall)\n";
+  if (!r.complete) out << "  INCOMPLETE, the run stopped: " << r.failure << "\n";
   out << "  " << padded("entity", 10) << padded("shape", 9) << padded("x [m]", 9) << padded("y [m]", 9)
       << padded("z [m]", 9) << padded("yaw [deg]", 10) << padded("status", 22) << "support\n";
   for (const EntityState& e : r.entities) {
@@ -90,8 +91,9 @@ nlohmann::json toJson(const RunResult& r) {
   }
   nlohmann::json events = nlohmann::json::array();
   for (const Event& e : r.events) events.push_back(eventJson(e));
-  return {{"scenario", r.scenario},
+  nlohmann::json j = {{"scenario", r.scenario},
           {"file", r.file},
+          {"complete", r.complete},
           {"mode", r.mode},
           {"settings",
            {{"timestep", r.settings.timestep},
@@ -106,6 +108,8 @@ nlohmann::json toJson(const RunResult& r) {
           {"entities", entities},
           {"events", events},
           {"state_hash", formatHash(r.stateHash)}};
+  if (!r.complete) j["failure"] = r.failure;
+  return j;
 }
 
 }  // namespace tabletop

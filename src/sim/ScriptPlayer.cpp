@@ -16,7 +16,11 @@ constexpr double kTimeSlack = 1e-9;
 
 ScriptPlayer::ScriptPlayer(const Scenario& scenario, const Settings& settings, Simulation& simulation,
                            StepObserver afterStep)
-    : scenario_(scenario), settings_(settings), simulation_(simulation), afterStep_(std::move(afterStep)) {}
+    : scenario_(scenario),
+      settings_(settings),
+      simulation_(simulation),
+      afterStep_(std::move(afterStep)),
+      guard_(scenario, settings, simulation.snapshot()) {}
 
 bool ScriptPlayer::durationReached() const {
   return simulation_.time() >= settings_.duration - kTimeSlack;
@@ -77,7 +81,9 @@ void ScriptPlayer::carryOut(const Action& action) {
 }
 
 void ScriptPlayer::push(const Arrow& arrow, const PushMagnitude& magnitude) {
+  const std::vector<EntityState> before = simulation_.snapshot();
   simulation_.push(arrow, magnitude);
+  guard_.pushed(before, simulation_.snapshot());
   lastArrow_ = arrow;
   ++pushes_;
 }
@@ -92,6 +98,7 @@ std::optional<Arrow> ScriptPlayer::arrow() const {
 
 void ScriptPlayer::step() {
   simulation_.step();
+  guard_.check(simulation_.snapshot(), simulation_.time());
   if (afterStep_) afterStep_(simulation_);
   runDue();
 }

@@ -7,6 +7,7 @@
 #include "core/Settings.h"
 #include "core/Simulation.h"
 #include "scenario/Scenario.h"
+#include "sim/DivergenceGuard.h"
 
 namespace tabletop {
 
@@ -31,7 +32,8 @@ class ScriptPlayer {
   /// Carries out every action whose time has come, up to the first one
   /// that must wait.
   void runDue();
-  /// One step of the simulation, then runDue().
+  /// One step of the simulation, then runDue(). Throws DivergenceError
+  /// when a body leaves the bounds of the scene (see DivergenceGuard).
   void step();
   /// True when no action is left and none is waiting.
   bool scriptDone() const { return next_ >= scenario_.script.size() && wait_ == Wait::None; }
@@ -68,6 +70,7 @@ class ScriptPlayer {
   double deadline_ = 0.0;
   std::optional<Arrow> lastArrow_;
   int pushes_ = 0;
+  DivergenceGuard guard_;
 };
 
 }  // namespace tabletop

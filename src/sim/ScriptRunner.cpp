@@ -11,9 +11,14 @@ RunResult runScript(const Scenario& scenario, const Settings& settings, Simulati
                     const StepObserver& afterStep) {
   const auto start = std::chrono::steady_clock::now();
   ScriptPlayer player(scenario, settings, sim, afterStep);
-  player.runToEnd();
-
   RunResult r;
+  try {
+    player.runToEnd();
+  } catch (const DivergenceError& e) {
+    r.complete = false;
+    r.failure = e.what();
+  }
+
   r.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   r.scenario = scenario.name;
   r.file = scenario.file;

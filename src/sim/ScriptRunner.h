@@ -10,7 +10,8 @@ namespace tabletop {
 /// Plays a scenario's script on a Simulation of any mode (a ScriptPlayer)
 /// until it is finished: the script done and everything at rest (when
 /// settings.endAtRest), or the duration reached; then collects the outcome.
-/// `afterStep`, when given, sees the simulation after every step.
+/// `afterStep`, when given, sees the simulation after every step. A run
+/// that diverges stops there and comes back marked incomplete.
 RunResult runScript(const Scenario& scenario, const Settings& settings, Simulation& simulation,
                     const StepObserver& afterStep = {});
 

@@ -1,0 +1,130 @@
+#include "sim/DivergenceGuard.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace tabletop {
+namespace {
+
+std::string message(const std::string& entity, double time, const std::string& detail) {
+  std::ostringstream o;
+  o << "diverged at t = " << time << " s: entity '" << entity << "': " << detail;
+  return o.str();
+}
+
+// Half the smallest dimension of an entity, metres.
+double smallestHalfDimension(const EntitySpec& e) {
+  switch (e.shape) {
+    case ShapeKind::Cube: return 0.5 * e.size.at(0);
+    case ShapeKind::Sphere: return e.size.at(0);
+    case ShapeKind::SolidBox: return 0.5 * *std::min_element(e.size.begin(), e.size.end());
+    case ShapeKind::Cylinder: return std::min({e.size.at(0), e.size.at(1), 0.5 * e.size.at(2)});
+  }
+  return 0.0;
+}
+
+// The radius of the sphere about the centre that holds the whole entity, m.
+double boundingRadius(const EntitySpec& e) {
+  switch (e.shape) {
+    case ShapeKind::Cube: return 0.5 * std::sqrt(3.0) * e.size.at(0);
+    case ShapeKind::Sphere: return e.size.at(0);
+    case ShapeKind::SolidBox: return 0.5 * std::hypot(e.size.at(0), e.size.at(1), e.size.at(2));
+    case ShapeKind::Cylinder: return std::hypot(std::max(e.size.at(0), e.size.at(1)), e.size.at(2));
+  }
+  return 0.0;
+}
+
+bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+std::string shown(const Vec3& v) {
+  std::ostringstream o;
+  o << "(" << v.x << ", " << v.y << ", " << v.z << ")";
+  return o.str();
+}
+
+}  // namespace
+
+DivergenceError::DivergenceError(std::string entity, double time, std::string quantity, const std::string& detail)
+    : std::runtime_error(message(entity, time, detail)),
+      entity_(std::move(entity)),
+      time_(time),
+      quantity_(std::move(quantity)) {}
+
+DivergenceGuard::DivergenceGuard(const Scenario& scenario, const Settings& settings,
+                                 const std::vector<EntityState>& start) {
+  for (const EntitySpec& e : scenario.entities) {
+    masses_.push_back(e.mass);
+    radii_.push_back(boundingRadius(e));
+  }
+  if (!masses_.empty()) lightest_ = *std::min_element(masses_.begin(), masses_.end());
+  smallest_ = 0.0;
+  for (const EntitySpec& e : scenario.entities) {
+    const double r = smallestHalfDimension(e);
+    smallest_ = smallest_ == 0.0 ? r : std::min(smallest_, r);
+  }
+  // Potential energy above the floor (y = 0), the lowest any centre can go.
+  for (std::size_t i = 0; i < start.size() && i < masses_.size(); ++i) {
+    energy_ += masses_[i] * settings.gravity * std::max(0.0, start[i].position.y);
+  }
+  energy_ += kineticEnergy(start);
+}
+
+double DivergenceGuard::kineticEnergy(const std::vector<EntityState>& states) const {
+  double e = 0.0;
+  for (std::size_t i = 0; i < states.size() && i < masses_.size(); ++i) {
+    e += 0.5 * masses_[i] * states[i].linearVelocity.dot(states[i].linearVelocity);
+  }
+  return e;
+}
+
+void DivergenceGuard::pushed(const std::vector<EntityState>& before, const std::vector<EntityState>& after) {
+  energy_ += std::max(0.0, kineticEnergy(after) - kineticEnergy(before));
+}
+
+double DivergenceGuard::speedBound() const {
+  return kSafety * std::sqrt(2.0 * energy_ / lightest_) + kSlack;
+}
+
+double DivergenceGuard::angularSpeedBound() const {
+  return (kSafety * std::sqrt(5.0) * std::sqrt(2.0 * energy_ / lightest_) + kSlack) / smallest_;
+}
+
+void DivergenceGuard::check(const std::vector<EntityState>& states, double time) const {
+  const double vMax = speedBound(), wMax = angularSpeedBound();
+  for (std::size_t i = 0; i < states.size(); ++i) {
+    const EntityState& s = states[i];
+    const auto fail = [&](const std::string& quantity, const std::string& detail) {
+      throw DivergenceError(s.name, time, quantity, detail);
+    };
+    if (!finite(s.position)) fail("position", "position is not finite " + shown(s.position));
+    if (!finite(s.linearVelocity)) fail("velocity", "velocity is not finite " + shown(s.linearVelocity));
+    if (!finite(s.angularVelocity)) {
+      fail("angular velocity", "angular velocity is not finite " + shown(s.angularVelocity));
+    }
+    for (double q : s.orientation) {
+      if (!std::isfinite(q)) fail("orientation", "orientation is not finite");
+    }
+    std::ostringstream o;
+    if (s.position.length() > kWorldRadius) {
+      o << "position " << shown(s.position) << " m is beyond the world's radius of " << kWorldRadius << " m";
+      fail("position", o.str());
+    }
+    if (i < radii_.size() && s.position.y < -radii_[i]) {
+      o << "centre at y = " << s.position.y << " m is below the floor: the body has passed through it";
+      fail("position", o.str());
+    }
+    if (s.linearVelocity.length() > vMax) {
+      o << "speed " << s.linearVelocity.length() << " m/s exceeds the scene's bound of " << vMax
+        << " m/s (energy " << energy_ << " J)";
+      fail("speed", o.str());
+    }
+    if (s.angularVelocity.length() > wMax) {
+      o << "angular speed " << s.angularVelocity.length() << " rad/s exceeds the scene's bound of " << wMax
+        << " rad/s (energy " << energy_ << " J)";
+      fail("angular speed", o.str());
+    }
+  }
+}
+
+}  // namespace tabletop
