@@ -25,6 +25,13 @@ int compareScenario(const CompareOptions& options, std::ostream& out, std::ostre
   } else {
     out << formatComparison(comparison);
   }
+  int status = kExitOk;
+  for (const RunResult& r : comparison.runs) {
+    if (!r.complete) {
+      err << r.file << ": mode " << r.mode << ": " << r.failure << "\n";
+      status = kExitDiverged;
+    }
+  }
   if (options.plot) {
     const std::string problem = writeTrajectoryPlot(comparison, scenario.table, *options.plot);
     if (!problem.empty()) {
@@ -32,7 +39,7 @@ int compareScenario(const CompareOptions& options, std::ostream& out, std::ostre
       return kExitFailure;
     }
   }
-  return kExitOk;
+  return status;
 }
 
 }  // namespace tabletop

@@ -18,6 +18,7 @@
 #include "image/PngFile.h"
 #include "render/GlRenderer.h"
 #include "scenario/ScenarioError.h"
+#include "sim/DivergenceGuard.h"
 #include "sim/SceneBuilder.h"
 #include "sim/ScriptPlayer.h"
 
@@ -175,6 +176,10 @@ int renderScenario(const RenderOptions& options, std::ostream& out, std::ostream
   } catch (const ScenarioError& e) {
     for (const std::string& line : e.lines()) err << line << "\n";
     return kExitBadInput;
+  } catch (const DivergenceError& e) {
+    err << scenario.file << ": " << e.what() << "; the " << frames << (frames == 1 ? " frame" : " frames")
+        << " before it in " << options.outDir << "\n";
+    return kExitDiverged;
   } catch (const std::runtime_error& e) {
     err << "tabletop render: " << e.what() << "\n";
     return kExitFailure;

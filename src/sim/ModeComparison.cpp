@@ -125,6 +125,9 @@ std::string formatComparison(const Comparison& c) {
   s += "  " + padded("entity", width) + padded("mode", 8) + padded("x [m]", 9) + padded("y [m]", 9) +
        padded("z [m]", 9) + padded("yaw [deg]", 10) + padded("status", 22) + padded("from rules [m]", 16) +
        "verdict\n";
+  for (const RunResult& r : c.runs) {
+    if (!r.complete) s += "  INCOMPLETE in mode " + r.mode + ", the run stopped: " + r.failure + "\n";
+  }
   for (const EntityComparison& e : c.entities) {
     for (std::size_t m = 0; m < 3; ++m) {
       const ModeOutcome& o = e.modes[m];
@@ -162,8 +165,12 @@ nlohmann::json comparisonJson(const Comparison& c) {
     std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(c.runs[m].stateHash));
     hashes[std::string(toString(kAllModes[m]))] = hex;
   }
-  return {{"scenario", c.scenario}, {"file", c.file}, {"agree_distance", kAgreeDistance},
-          {"entities", entities}, {"state_hash", hashes}};
+  nlohmann::json j{{"scenario", c.scenario}, {"file", c.file}, {"agree_distance", kAgreeDistance},
+                   {"entities", entities}, {"state_hash", hashes}};
+  for (const RunResult& r : c.runs) {
+    if (!r.complete) j["failures"][r.mode] = r.failure;
+  }
+  return j;
 }
 
 }  // namespace tabletop

@@ -61,6 +61,8 @@ void ViewerSession::build(bool playScript) {
   player_->runDue();
   pushesSeen_ = player_->pushes();
   budget_ = 0.0;
+  if (diverged_) paused_ = false;
+  diverged_ = false;
 }
 
 void ViewerSession::cycleArrow() {
@@ -123,9 +125,22 @@ void ViewerSession::reset(bool playScript) {
   message_ = playScript ? "reset; playing the script" : "reset";
 }
 
+bool ViewerSession::stepOnce() {
+  if (diverged_) return false;
+  try {
+    player_->step();
+    return true;
+  } catch (const DivergenceError& e) {
+    diverged_ = paused_ = true;
+    budget_ = 0.0;
+    message_ = std::string(e.what()) + "; R resets";
+    return false;
+  }
+}
+
 void ViewerSession::singleStep() {
   if (!paused_) return;
-  player_->step();
+  stepOnce();
 }
 
 void ViewerSession::setSpeed(double speed) {
@@ -138,10 +153,7 @@ void ViewerSession::advance(double wallSeconds) {
   const double before = simulation_->time();
   if (!paused_) {
     budget_ += std::min(wallSeconds, kMostAtOnce) * speed_;
-    while (budget_ >= settings_.timestep) {
-      player_->step();
-      budget_ -= settings_.timestep;
-    }
+    while (budget_ >= settings_.timestep && stepOnce()) budget_ -= settings_.timestep;
   }
   // The arrow follows the script's pushes.
   if (player_->pushes() != pushesSeen_) {

@@ -63,8 +63,12 @@ class ViewerSession {
   void reset(bool playScript);
 
   // The simulate-style controls.
-  void togglePause() { paused_ = !paused_; }
+  /// Pauses or plays; a scene that diverged stays paused until reset.
+  void togglePause() { paused_ = !paused_ || diverged_; }
   bool paused() const { return paused_; }
+  /// True once a step diverged (see DivergenceGuard): the scene is paused
+  /// and the message says where; reset starts it again.
+  bool diverged() const { return diverged_; }
   /// One simulation step, when paused.
   void singleStep();
   /// Simulated seconds per wall second (1: real time), within 1/64..4.
@@ -99,6 +103,8 @@ class ViewerSession {
 
  private:
   void build(bool playScript);
+  /// One step of the player; on divergence, pauses and says why.
+  bool stepOnce();
   std::string arrowText() const;
 
   Scenario scenario_;
@@ -114,6 +120,7 @@ class ViewerSession {
   bool arrowVisible_ = true;
   RotationTarget rotationTarget_ = RotationTarget::TableAndEntities;
   bool paused_ = false;
+  bool diverged_ = false;
   double speed_ = 1.0;
   bool contacts_ = false;
   double budget_ = 0.0;  // simulated seconds owed to the wall clock

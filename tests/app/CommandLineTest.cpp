@@ -157,6 +157,45 @@ TEST(CommandLine, OverlapAndMissingFileAndBadOptionsAreStatusTwo) {
   EXPECT_EQ(o.status, 2);
 }
 
+// A run that diverges: what it had on standard output marked incomplete,
+// one line naming the entity, the time and the quantity, status 3.
+TEST(CommandLine, DivergenceIsStatusThreeAndMarkedIncomplete) {
+  const std::string path = writeTemp("absurd.json", R"({"version": 1, "name": "absurd",
+    "settings": {"timestep": 0.1, "duration": 5},
+    "entities": [{"name": "A", "shape": "cube", "size": 0.01, "position": [0, 0], "mass": 0.0001}],
+    "script": [{"push": {"entity": "A", "direction": "Left", "impulse": 1e6}}]})");
+  Outcome o = run(kBin + "tabletop run " + path);
+  EXPECT_EQ(o.status, 3);
+  EXPECT_EQ(lineCount(o.err), 1) << o.err;
+  EXPECT_NE(o.err.find(path + ": diverged at t = 0.1 s: entity 'A': position"), std::string::npos) << o.err;
+  EXPECT_NE(o.out.find("INCOMPLETE"), std::string::npos) << o.out;
+  o = run(kBin + "tabletop run --json " + path);
+  EXPECT_EQ(o.status, 3);
+  const nlohmann::json j = nlohmann::json::parse(o.out);
+  EXPECT_FALSE(j["complete"].get<bool>());
+  EXPECT_NE(j["failure"].get<std::string>().find("entity 'A'"), std::string::npos);
+  const std::string dir = ::testing::TempDir() + "absurd_frames";
+  std::filesystem::remove_all(dir);
+  o = run(kBin + "tabletop render " + path + " --out " + dir + " --at 0,0.5 --size 64x48");
+  EXPECT_EQ(o.status, 3);
+  EXPECT_NE(o.err.find("diverged at t = 0.1 s"), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("the 1 frame before it in"), std::string::npos) << o.err;
+  EXPECT_TRUE(std::filesystem::exists(dir + "/t_0.000.png"));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/t_0.500.png"));
+  // A finished run says it is complete.
+  o = run(kBin + "tabletop run --json " + kScenarios + "example1_single_cube.json");
+  EXPECT_EQ(o.status, 0);
+  EXPECT_TRUE(nlohmann::json::parse(o.out)["complete"].get<bool>());
+}
+
+// The command line's overrides are held to the same step budget.
+TEST(CommandLine, OverridesThatAskForTooManyStepsAreStatusTwo) {
+  const Outcome o = run(kBin + "tabletop run " + kScenarios + "example1_single_cube.json --timestep 1e-5 --duration 3000");
+  EXPECT_EQ(o.status, 2);
+  EXPECT_EQ(lineCount(o.err), 1) << o.err;
+  EXPECT_NE(o.err.find("expected at most 1e+07 steps"), std::string::npos) << o.err;
+}
+
 // Every mode prints the same JSON keys for each entity.
 TEST(CommandLine, EveryModeRunsWithTheSameOutputFormat) {
   std::vector<std::string> keys;

@@ -187,5 +187,30 @@ TEST(ViewerSession, ARefusedPushIsAMessage) {
   EXPECT_NE(s.overlay().back().find("cannot push"), std::string::npos) << s.overlay().back();
 }
 
+// A scene that diverges pauses the viewer with the reason instead of
+// drawing garbage; play stays off until reset, which starts it again.
+TEST(ViewerSession, DivergencePausesWithTheReasonUntilReset) {
+  const Scenario scenario = ScenarioLoader::loadText(R"({"version": 1, "name": "absurd",
+      "settings": {"timestep": 0.1},
+      "entities": [{"name": "A", "shape": "cube", "size": 0.01, "position": [0, 0], "mass": 0.0001}],
+      "script": [{"push": {"entity": "A", "direction": "Left", "impulse": 1e6}}]})",
+                                                     "absurd.json");
+  ViewerSettings v;
+  ViewerSession s(scenario, scenario.settings, v);
+  play(s, 0.5);
+  EXPECT_TRUE(s.diverged());
+  EXPECT_TRUE(s.paused());
+  EXPECT_DOUBLE_EQ(s.simulation().time(), 0.1);
+  const std::vector<std::string> lines = s.overlay();
+  bool said = false;
+  for (const std::string& line : lines) said = said || line.find("diverged at t = 0.1 s: entity 'A'") != std::string::npos;
+  EXPECT_TRUE(said);
+  s.togglePause();
+  EXPECT_TRUE(s.paused());
+  s.reset(false);
+  EXPECT_FALSE(s.diverged());
+  EXPECT_FALSE(s.paused());
+}
+
 }  // namespace
 }  // namespace tabletop
