@@ -11,6 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/InterruptGuard.h"
 #include "draw/Camera.h"
 #include "draw/SceneDrawing.h"
 #include "headless/OsMesaContext.h"
@@ -153,12 +154,14 @@ int renderScenario(const RenderOptions& options, std::ostream& out, std::ostream
 
   const std::filesystem::path dir(options.outDir);
   long frames = 0;
+  const InterruptGuard interrupt;
   try {
     if (!options.at.empty()) {
       std::vector<double> times = options.at;
       std::sort(times.begin(), times.end());
       times.erase(std::unique(times.begin(), times.end()), times.end());
       for (double t : times) {
+        if (interrupt.requested()) break;
         maker->frameAt(t, (dir / stillName(t)).string());
         ++frames;
       }
@@ -167,7 +170,7 @@ int renderScenario(const RenderOptions& options, std::ostream& out, std::ostream
       for (long k = 0; std::filesystem::remove(dir / frameName(k)); ++k) {
       }
       double end = std::numeric_limits<double>::infinity();
-      for (long k = 0; k / options.fps <= end + kTimeSlack; ++k) {
+      for (long k = 0; k / options.fps <= end + kTimeSlack && !interrupt.requested(); ++k) {
         maker->frameAt(k / options.fps, (dir / frameName(k)).string());
         ++frames;
         if (maker->finished() && !std::isfinite(end)) end = maker->time() + kHoldSeconds;
@@ -183,6 +186,11 @@ int renderScenario(const RenderOptions& options, std::ostream& out, std::ostream
   } catch (const std::runtime_error& e) {
     err << "tabletop render: " << e.what() << "\n";
     return kExitFailure;
+  }
+  if (interrupt.requested()) {
+    err << "tabletop render: interrupted after " << frames << (frames == 1 ? " frame" : " frames")
+        << ", each complete, in " << options.outDir << (options.video ? "; no video made" : "") << "\n";
+    return kExitInterrupted;
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   out << scenario.name << ": " << frames << (frames == 1 ? " frame" : " frames") << " of " << size->first << "x"

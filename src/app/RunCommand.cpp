@@ -3,9 +3,11 @@
 #include <exception>
 #include <iostream>
 #include <map>
+#include <sstream>
 
 #include <CLI/CLI.hpp>
 
+#include "io/AtomicFile.h"
 #include "scenario/ScenarioError.h"
 #include "scenario/ScenarioLoader.h"
 #include "sim/ResultFormat.h"
@@ -66,16 +68,23 @@ int runScenarios(const RunOptions& options, std::ostream& out, std::ostream& err
     }
   }
 
+  std::ostringstream text;
   if (options.json) {
     if (results.size() == 1) {
-      out << toJson(results.front()).dump(2) << "\n";
+      text << toJson(results.front()).dump(2) << "\n";
     } else {
       nlohmann::json all = nlohmann::json::array();
       for (const RunResult& r : results) all.push_back(toJson(r));
-      out << all.dump(2) << "\n";
+      text << all.dump(2) << "\n";
     }
   } else {
-    for (std::size_t i = 0; i < results.size(); ++i) out << (i ? "\n" : "") << formatText(results[i]);
+    for (std::size_t i = 0; i < results.size(); ++i) text << (i ? "\n" : "") << formatText(results[i]);
+  }
+  if (!options.outFile) {
+    out << text.str();
+  } else if (const std::string problem = AtomicFile::write(*options.outFile, text.str()); !problem.empty()) {
+    err << "tabletop run: --out: " << problem << "\n";
+    return kExitFailure;
   }
   return status;
 }

@@ -38,6 +38,7 @@ struct RunOptions {
   std::optional<double> timestep;
   std::optional<int> iterations;
   std::optional<double> duration;
+  std::optional<std::string> outFile;  ///< write the output here, whole or not at all
 };
 
 /// Declares run's options (all but the scenario list) on `command`; with

@@ -1,5 +1,7 @@
 #include "app/TrajectoryPlot.h"
 
+#include "io/AtomicFile.h"
+
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -35,11 +37,11 @@ std::string writeTrajectoryPlot(const Comparison& c, const TableSpec& table, con
   } else {
     return "--plot: expected a file name ending in .png or .svg, got '" + path + "'";
   }
-  const std::string temporary = path + ".part";
+  AtomicFile file(path);
 
   std::ostringstream g;
   g << "set terminal " << terminal << "\n";
-  g << "set output " << quoted(temporary) << "\n";
+  g << "set output " << quoted(file.temporaryPath()) << "\n";
   g << "set title " << quoted(c.scenario + ": top view, rules (dashed), compat, bullet") << " noenhanced\n";
   g << "set xlabel 'x [m]'\nset ylabel 'z [m] (towards the viewer, down the page)'\n";
   const double x0 = table.centreX - 0.5 * table.width, x1 = table.centreX + 0.5 * table.width;
@@ -95,21 +97,12 @@ std::string writeTrajectoryPlot(const Comparison& c, const TableSpec& table, con
   const std::string script = g.str();
   std::fwrite(script.data(), 1, script.size(), pipe);
   const int status = pclose(pipe);
-  std::error_code ignored;
   if (!WIFEXITED(status) || WEXITSTATUS(status) == 127) {
-    std::filesystem::remove(temporary, ignored);
     return "--plot needs gnuplot (Debian package gnuplot-nox), which is not installed";
   }
-  if (WEXITSTATUS(status) != 0 || !std::filesystem::exists(temporary)) {
-    std::filesystem::remove(temporary, ignored);
-    return "--plot: gnuplot failed to write '" + path + "'";
-  }
-  std::error_code error;
-  std::filesystem::rename(temporary, path, error);
-  if (error) {
-    std::filesystem::remove(temporary, ignored);
-    return "--plot: cannot write '" + path + "': " + error.message();
-  }
+  if (WEXITSTATUS(status) != 0) return "--plot: gnuplot failed to write '" + path + "'";
+  const std::string problem = file.commit();
+  if (!problem.empty()) return "--plot: " + problem;
   return {};
 }
 

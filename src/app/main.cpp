@@ -42,6 +42,8 @@ int main(int argc, char** argv) {
       "run", "Run scenario files headless and print each entity's final state and the events");
   runCommand->add_option("SCENARIO", files, "Scenario files (JSON)")->required();
   addRunOptions(*runCommand, run);
+  runCommand->add_option("--out", run.outFile,
+                         "Write the output to FILE instead of standard output (whole or not at all)");
   runCommand->callback([&] {
     for (const std::string& f : files) run.scenarios.push_back({f, std::nullopt});
     status = runScenarios(run, std::cout, std::cerr);

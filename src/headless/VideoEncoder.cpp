@@ -1,5 +1,7 @@
 #include "headless/VideoEncoder.h"
 
+#include "io/AtomicFile.h"
+
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
@@ -85,22 +87,15 @@ std::optional<std::string> encodeVideo(const std::string& framePattern, double f
     return videoNameProblem(out);
   }
   if (!ffmpegAvailable()) return "ffmpeg is not installed, so no video was made (apt-get install ffmpeg)";
-  const std::string temporary = out + ".part";
+  AtomicFile file(out);
   const std::string log = out + ".log.part";
-  args.push_back(temporary);
+  args.push_back(file.temporaryPath());
   const int status = run(args, log);
   const std::string why = lastLine(log);
   std::remove(log.c_str());
-  if (status != 0) {
-    std::remove(temporary.c_str());
-    return "ffmpeg could not encode " + out + (why.empty() ? std::string() : ": " + why);
-  }
-  std::error_code ec;
-  std::filesystem::rename(temporary, out, ec);
-  if (ec) {
-    std::remove(temporary.c_str());
-    return out + ": cannot rename into place: " + ec.message();
-  }
+  if (status != 0) return "ffmpeg could not encode " + out + (why.empty() ? std::string() : ": " + why);
+  const std::string problem = file.commit();
+  if (!problem.empty()) return problem;
   return std::nullopt;
 }
 

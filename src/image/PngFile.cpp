@@ -2,9 +2,9 @@
 
 #include <png.h>
 
-#include <cstdio>
-#include <filesystem>
 #include <stdexcept>
+
+#include "io/AtomicFile.h"
 
 namespace tabletop {
 namespace {
@@ -22,24 +22,19 @@ void writePng(const Image& image, const std::string& path) {
   if (image.width <= 0 || image.height <= 0 || image.rgb.size() != std::size_t(image.width) * image.height * 3) {
     fail(path, "cannot write an empty or malformed image");
   }
-  const std::string temporary = path + ".part";
+  AtomicFile file(path);
   png_image png{};
   png.version = PNG_IMAGE_VERSION;
   png.width = static_cast<png_uint_32>(image.width);
   png.height = static_cast<png_uint_32>(image.height);
   png.format = PNG_FORMAT_RGB;
-  if (!png_image_write_to_file(&png, temporary.c_str(), 0, image.rgb.data(), 0, nullptr)) {
+  if (!png_image_write_to_file(&png, file.temporaryPath().c_str(), 0, image.rgb.data(), 0, nullptr)) {
     const std::string message = png.message;
     png_image_free(&png);
-    std::remove(temporary.c_str());
     fail(path, "cannot write PNG: " + message);
   }
-  std::error_code ec;
-  std::filesystem::rename(temporary, path, ec);
-  if (ec) {
-    std::remove(temporary.c_str());
-    fail(path, "cannot rename into place: " + ec.message());
-  }
+  const std::string problem = file.commit();
+  if (!problem.empty()) throw std::runtime_error(problem);
 }
 
 Image readPng(const std::string& path) {

@@ -1,6 +1,9 @@
 // The tabletop executable as a user runs it: output, errors, exit statuses.
 
+#include <fcntl.h>
 #include <sys/wait.h>
+
+#include <csignal>
 
 #include <array>
 #include <cstdio>
@@ -194,6 +197,106 @@ TEST(CommandLine, OverridesThatAskForTooManyStepsAreStatusTwo) {
   EXPECT_EQ(o.status, 2);
   EXPECT_EQ(lineCount(o.err), 1) << o.err;
   EXPECT_NE(o.err.find("expected at most 1e+07 steps"), std::string::npos) << o.err;
+}
+
+// Starts `tabletop ARGS...` in the background, its output in files.
+pid_t start(const std::vector<std::string>& args, const std::string& errFile) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const int out = open("/dev/null", O_WRONLY), err = open(errFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    dup2(out, 1);
+    dup2(err, 2);
+    std::vector<char*> argv;
+    const std::string bin = kBin + "tabletop";
+    argv.push_back(const_cast<char*>(bin.c_str()));
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    execv(bin.c_str(), argv.data());
+    _exit(127);
+  }
+  return pid;
+}
+
+std::vector<std::string> filesIn(const std::string& dir, const std::string& suffix) {
+  std::vector<std::string> found;
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(dir, ec)) {
+    const std::string name = e.path().filename().string();
+    if (name.size() >= suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0) {
+      found.push_back(e.path().string());
+    }
+  }
+  return found;
+}
+
+// What interruptRender() returns for a process a signal ended.
+constexpr int kKilledBy = 1000;
+
+// Renders example 2 at 400 frames per second (about 850 frames) and
+// signals the render once five frames are there.
+int interruptRender(const std::string& dir, int signal, std::string& err) {
+  std::filesystem::remove_all(dir);
+  const std::string errFile = dir + ".err";
+  const pid_t pid = start({"render", kScenarios + "example2_two_cubes.json", "--out", dir, "--fps", "400", "--size",
+                           "160x120", "--video", dir + "/all.gif"},
+                          errFile);
+  for (int i = 0; i < 6000 && filesIn(dir, ".png").size() < 5; ++i) usleep(10000);
+  kill(pid, signal);
+  int raw = 0;
+  waitpid(pid, &raw, 0);
+  std::ifstream in(errFile);
+  err.assign(std::istreambuf_iterator<char>(in), {});
+  return WIFEXITED(raw) ? WEXITSTATUS(raw) : kKilledBy + WTERMSIG(raw);
+}
+
+// Ctrl-C stops a long render cleanly: status 130, the frames made so far
+// kept, each a whole PNG, no temporary file left and no video begun.
+TEST(CommandLine, InterruptedRenderKeepsWholeFramesAndNoTemporaries) {
+  const std::string dir = ::testing::TempDir() + "interrupted_render";
+  std::string err;
+  EXPECT_EQ(interruptRender(dir, SIGINT, err), 130) << err;
+  EXPECT_EQ(lineCount(err), 1) << err;
+  EXPECT_NE(err.find("interrupted after"), std::string::npos) << err;
+  EXPECT_NE(err.find("no video made"), std::string::npos) << err;
+  const std::vector<std::string> frames = filesIn(dir, ".png");
+  EXPECT_GE(frames.size(), 5u);
+  EXPECT_LT(frames.size(), 800u);
+  EXPECT_NE(err.find("after " + std::to_string(frames.size()) + " frames"), std::string::npos) << err;
+  for (const std::string& f : frames) {
+    const tabletop::Image image = tabletop::readPng(f);
+    EXPECT_EQ(image.width, 160) << f;
+    EXPECT_EQ(image.height, 120) << f;
+  }
+  EXPECT_TRUE(filesIn(dir, ".part").empty());
+  EXPECT_FALSE(std::filesystem::exists(dir + "/all.gif"));
+}
+
+// A kill cannot be caught: it may leave a temporary file, but never a
+// half-written frame under a frame's name.
+TEST(CommandLine, KilledRenderLeavesNoHalfWrittenFrame) {
+  const std::string dir = ::testing::TempDir() + "killed_render";
+  std::string err;
+  EXPECT_EQ(interruptRender(dir, SIGKILL, err), kKilledBy + SIGKILL);
+  const std::vector<std::string> frames = filesIn(dir, ".png");
+  EXPECT_GE(frames.size(), 5u);
+  for (const std::string& f : frames) EXPECT_NO_THROW(tabletop::readPng(f)) << f;
+  EXPECT_LE(filesIn(dir, ".part").size(), 1u);
+}
+
+// run --out writes its output whole, or leaves the file as it was.
+TEST(CommandLine, RunOutWritesTheFileWholeOrNotAtAll) {
+  const std::string file = ::testing::TempDir() + "run_out.json";
+  std::filesystem::remove(file);
+  Outcome o = run(kBin + "tabletop run --json --out " + file + " " + kScenarios + "example1_single_cube.json");
+  EXPECT_EQ(o.status, 0) << o.err;
+  EXPECT_TRUE(o.out.empty()) << o.out;
+  std::ifstream in(file);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["scenario"], "example1_single_cube");
+  EXPECT_FALSE(std::filesystem::exists(file + ".part"));
+  o = run(kBin + "tabletop run --out /no/such/dir/out.json " + kScenarios + "example1_single_cube.json");
+  EXPECT_EQ(o.status, 1);
+  EXPECT_EQ(lineCount(o.err), 1) << o.err;
 }
 
 // Every mode prints the same JSON keys for each entity.
