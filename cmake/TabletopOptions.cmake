@@ -18,4 +18,7 @@ if(TABLETOP_SANITIZE)
   target_compile_options(tabletop_options INTERFACE ${tabletop_sanitizers}
     $<$<BOOL:${TABLETOP_FUZZ}>:-fsanitize=fuzzer-no-link>)
   target_link_options(tabletop_options INTERFACE ${tabletop_sanitizers})
+  # The sanitizers' defaults and suppressions, in each executable.
+  target_sources(tabletop_options INTERFACE
+    $<$<STREQUAL:$<TARGET_PROPERTY:TYPE>,EXECUTABLE>:${PROJECT_SOURCE_DIR}/cmake/SanitizerDefaults.cpp>)
 endif()
