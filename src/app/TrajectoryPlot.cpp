@@ -1,13 +1,9 @@
 #include "app/TrajectoryPlot.h"
 
-#include "io/AtomicFile.h"
-
-#include <sys/wait.h>
-
 #include <algorithm>
-#include <cstdio>
-#include <filesystem>
 #include <sstream>
+
+#include "app/GnuplotFile.h"
 
 namespace tabletop {
 namespace {
@@ -16,32 +12,12 @@ namespace {
 constexpr const char* kModeStyle[3] = {"lc rgb '#000000' dt 2 lw 1.5", "lc rgb '#1f5fd0' lw 4",
                                        "lc rgb '#d03020' lw 2"};
 
-std::string quoted(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += c == '\'' ? std::string("''") : std::string(1, c);
-  return out + "'";
-}
-
-bool endsWith(const std::string& s, const std::string& suffix) {
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
-}
+const auto quoted = gnuplotQuoted;
 
 }  // namespace
 
 std::string writeTrajectoryPlot(const Comparison& c, const TableSpec& table, const std::string& path) {
-  std::string terminal;
-  if (endsWith(path, ".png")) {
-    terminal = "pngcairo size 1000,760 font 'sans,10'";
-  } else if (endsWith(path, ".svg")) {
-    terminal = "svg size 1000,760 font 'sans,10'";
-  } else {
-    return "--plot: expected a file name ending in .png or .svg, got '" + path + "'";
-  }
-  AtomicFile file(path);
-
   std::ostringstream g;
-  g << "set terminal " << terminal << "\n";
-  g << "set output " << quoted(file.temporaryPath()) << "\n";
   g << "set title " << quoted(c.scenario + ": top view, rules (dashed), compat, bullet") << " noenhanced\n";
   g << "set xlabel 'x [m]'\nset ylabel 'z [m] (towards the viewer, down the page)'\n";
   const double x0 = table.centreX - 0.5 * table.width, x1 = table.centreX + 0.5 * table.width;
@@ -89,21 +65,8 @@ std::string writeTrajectoryPlot(const Comparison& c, const TableSpec& table, con
       first = false;
     }
   }
-  g << "\nunset output\n";
-
-  // gnuplot falls back to standard output when it cannot open a file.
-  FILE* pipe = popen("gnuplot >/dev/null 2>&1", "w");
-  if (!pipe) return "--plot: could not start gnuplot";
-  const std::string script = g.str();
-  std::fwrite(script.data(), 1, script.size(), pipe);
-  const int status = pclose(pipe);
-  if (!WIFEXITED(status) || WEXITSTATUS(status) == 127) {
-    return "--plot needs gnuplot (Debian package gnuplot-nox), which is not installed";
-  }
-  if (WEXITSTATUS(status) != 0) return "--plot: gnuplot failed to write '" + path + "'";
-  const std::string problem = file.commit();
-  if (!problem.empty()) return "--plot: " + problem;
-  return {};
+  const std::string problem = writeGnuplotFile(path, g.str(), 1000, 760);
+  return problem.empty() ? problem : "--plot: " + problem;
 }
 
 }  // namespace tabletop

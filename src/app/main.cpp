@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/BenchCommand.h"
 #include "app/CompareCommand.h"
 #include "app/RenderCommand.h"
 #include "app/RunCommand.h"
@@ -71,6 +72,12 @@ int main(int argc, char** argv) {
   viewCommand->remove_option(viewCommand->get_option("--json"));
   addViewOptions(*viewCommand, view);
   viewCommand->callback([&] { status = viewScenario(view, std::cerr); });
+
+  BenchOptions bench;
+  CLI::App* benchCommand = app.add_subcommand(
+      "bench", "Measure speed against error: sweep timesteps and solver iterations over scenes, print the fronts");
+  addBenchOptions(*benchCommand, bench);
+  benchCommand->callback([&] { status = runBench(bench, std::cout, std::cerr); });
 
   try {
     return parseAndRun(app, argc, argv, status);

@@ -299,6 +299,29 @@ TEST(CommandLine, RunOutWritesTheFileWholeOrNotAtAll) {
   EXPECT_EQ(lineCount(o.err), 1) << o.err;
 }
 
+// bench sweeps the settings asked for: a table with the front marked, a
+// CSV row per setting and a plot per scene; bad options are status 2.
+TEST(CommandLine, BenchPrintsTheTableAndWritesCsvAndPlot) {
+  const std::string dir = ::testing::TempDir() + "bench_out";
+  std::filesystem::remove_all(dir);
+  Outcome o = run(kBin + "tabletop bench --scenarios " + kScenarios +
+                  " --cases free_flight --repeats 1 --rates 60,240 --iterations 4,10 --out " + dir);
+  ASSERT_EQ(o.status, 0) << o.err;
+  EXPECT_NE(o.out.find("free_flight  (error against the closed form)"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("*"), std::string::npos) << o.out;
+  std::ifstream csv(dir + "/bench.csv");
+  std::string line;
+  int rows = 0;
+  while (std::getline(csv, line)) ++rows;
+  EXPECT_EQ(rows, 1 + 2 * 2);
+  EXPECT_TRUE(std::filesystem::exists(dir + "/bench_free_flight.png"));
+  o = run(kBin + "tabletop bench --scenarios " + kScenarios + " --cases no_such_scene");
+  EXPECT_EQ(o.status, 2);
+  EXPECT_EQ(lineCount(o.err), 1) << o.err;
+  o = run(kBin + "tabletop bench --rates 5");
+  EXPECT_EQ(o.status, 2);
+}
+
 // Every mode prints the same JSON keys for each entity.
 TEST(CommandLine, EveryModeRunsWithTheSameOutputFormat) {
   std::vector<std::string> keys;

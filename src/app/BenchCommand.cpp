@@ -1,0 +1,244 @@
+#include "app/BenchCommand.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "app/GnuplotFile.h"
+#include "app/InterruptGuard.h"
+#include "app/RunCommand.h"
+#include "io/AtomicFile.h"
+#include "scenario/ScenarioError.h"
+#include "scenario/ScenarioLoader.h"
+#include "sim/Benchmark.h"
+#include "sim/ResultFormat.h"
+
+namespace tabletop {
+namespace {
+
+std::vector<std::string> defaultScenes(const std::string& dir) {
+  std::vector<std::string> files;
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(dir + "/analytic", ec)) {
+    if (e.path().extension() == ".json") files.push_back(e.path().string());
+  }
+  for (const auto& e : std::filesystem::directory_iterator(dir, ec)) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind("example", 0) == 0 && e.path().extension() == ".json") files.push_back(e.path().string());
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+// A bar on standard error, redrawn in place, when it is a terminal.
+class Progress {
+ public:
+  Progress(std::ostream& err, long total) : err_(err), total_(total), shown_(isatty(STDERR_FILENO)) {}
+  void advance(const std::string& what) {
+    ++done_;
+    if (!shown_) return;
+    const int width = 30, filled = static_cast<int>(width * done_ / std::max(1L, total_));
+    err_ << "\r[" << std::string(filled, '#') << std::string(width - filled, ' ') << "] " << done_ << "/" << total_
+         << " " << what << "\033[K" << std::flush;
+  }
+  ~Progress() {
+    if (shown_) err_ << "\r\033[K" << std::flush;
+  }
+
+ private:
+  std::ostream& err_;
+  long total_;
+  long done_ = 0;
+  bool shown_;
+};
+
+std::string table(const std::vector<BenchPoint>& points, const std::string& scene, bool analytic) {
+  std::ostringstream o;
+  o << scene << "  (error against " << (analytic ? "the closed form" : "a run at 4000 Hz, 50 iterations") << ")\n";
+  o << "  " << padded("rate [Hz]", 11) << padded("iterations", 12) << padded("cost [ms/s]", 13)
+    << padded("spread", 9) << padded("error [mm]", 12) << "front\n";
+  std::vector<BenchPoint> rows;
+  for (const BenchPoint& p : points) {
+    if (p.scene == scene) rows.push_back(p);
+  }
+  std::sort(rows.begin(), rows.end(), [](const BenchPoint& a, const BenchPoint& b) { return a.costMs < b.costMs; });
+  for (const BenchPoint& p : rows) {
+    o << "  " << padded(fixed(1.0 / p.timestep, 0), 11) << padded(std::to_string(p.iterations), 12)
+      << padded(fixed(p.costMs, 3), 13) << padded(fixed(100.0 * p.spread, 0) + "%", 9)
+      << padded(p.complete ? fixed(1000.0 * p.error, 4) : std::string("diverged"), 12) << (p.front ? "*" : "")
+      << "\n";
+  }
+  return o.str();
+}
+
+std::string csv(const std::vector<BenchPoint>& points) {
+  std::ostringstream o;
+  o << std::setprecision(9) << "scene,rate_hz,timestep_s,iterations,cost_ms_per_s,spread,error_m,complete,front\n";
+  for (const BenchPoint& p : points) {
+    o << p.scene << "," << 1.0 / p.timestep << "," << p.timestep << "," << p.iterations << "," << p.costMs << ","
+      << p.spread << "," << p.error << "," << p.complete << "," << p.front << "\n";
+  }
+  return o.str();
+}
+
+// error [mm] against cost [ms per simulated second], log-log, one curve
+// per iteration count, the front circled.
+std::string plotScript(const std::vector<BenchPoint>& points, const std::string& scene, const std::vector<int>& its) {
+  std::ostringstream g;
+  g << std::setprecision(9);
+  g << "set title " << gnuplotQuoted(scene + ": error against cost (Bullet, double)") << " noenhanced\n";
+  g << "set logscale xy\nset grid\nset key top right\n";
+  g << "set xlabel 'wall time per simulated second [ms]'\nset ylabel 'error [mm]'\n";
+  std::vector<std::string> curves;
+  for (int it : its) {
+    g << "$i" << it << " << EOD\n";
+    for (const BenchPoint& p : points) {
+      if (p.scene == scene && p.iterations == it && p.complete) {
+        g << p.costMs << " " << std::max(1e-6, 1000.0 * p.error) << " " << 1.0 / p.timestep << "\n";
+      }
+    }
+    g << "EOD\n";
+    curves.push_back("$i" + std::to_string(it) + " using 1:2 with linespoints title '" + std::to_string(it) +
+                     " iterations'");
+  }
+  g << "$front << EOD\n";
+  for (const BenchPoint& p : points) {
+    if (p.scene == scene && p.front) g << p.costMs << " " << std::max(1e-6, 1000.0 * p.error) << "\n";
+  }
+  g << "EOD\n";
+  curves.push_back("$front using 1:2 with points pt 6 ps 2.5 lc rgb 'black' title 'Pareto front'");
+  g << "plot ";
+  for (std::size_t i = 0; i < curves.size(); ++i) g << (i ? ", \\\n     " : "") << curves[i];
+  g << "\n";
+  return g.str();
+}
+
+}  // namespace
+
+void addBenchOptions(CLI::App& command, BenchOptions& options) {
+  command.add_option("SCENARIO", options.scenarios,
+                     "Scenes to measure (default: scenarios/analytic/*.json and the report's examples)");
+  command.add_option("--scenarios", options.scenarioDir, "Where the default scenes are (default: scenarios)");
+  command.add_option("--cases", options.cases, "Only scenes whose name contains PATTERN");
+  command.add_option("--out", options.outDir, "Write DIR/bench.csv and DIR/bench_SCENE.png (log-log plots)");
+  command.add_flag("--json", options.json, "Print the measurements as JSON instead of tables");
+  command.add_option("--repeats", options.repeats, "Timed runs per setting, after a warm-up (default 5)")
+      ->check(CLI::Range(1, 1000));
+  command.add_option("--rates", options.rates, "Step rates to sweep, Hz (default 30,60,...,4000)")
+      ->delimiter(',')
+      ->check(CLI::Range(1.0 / kMaxTimestep, 1.0 / kMinTimestep));
+  command.add_option("--iterations", options.iterations, "Solver iterations to sweep (default 4,10,20,50)")
+      ->delimiter(',')
+      ->check(CLI::Range(1, 10000));
+}
+
+int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) {
+  std::vector<BenchScene> scenes;
+  const std::vector<std::string> files = options.scenarios.empty() ? defaultScenes(options.scenarioDir)
+                                                                   : options.scenarios;
+  bool bad = false;
+  for (const std::string& f : files) {
+    try {
+      Scenario s = ScenarioLoader::loadFile(f);
+      if (!options.cases || s.name.find(*options.cases) != std::string::npos) scenes.emplace_back(std::move(s));
+    } catch (const ScenarioError& e) {
+      for (const std::string& line : e.lines()) err << line << "\n";
+      bad = true;
+    }
+  }
+  if (bad) return kExitBadInput;
+  if (scenes.empty()) {
+    err << "tabletop bench: no scene to measure (looked in " << options.scenarioDir
+        << (options.cases ? " for names containing '" + *options.cases + "'" : std::string()) << ")\n";
+    return kExitBadInput;
+  }
+  if (options.outDir) {
+    std::error_code ec;
+    std::filesystem::create_directories(*options.outDir, ec);
+    if (ec || !std::filesystem::is_directory(*options.outDir)) {
+      err << "tabletop bench: --out: cannot make the directory '" << *options.outDir << "'\n";
+      return kExitFailure;
+    }
+  }
+
+  const InterruptGuard interrupt;
+  std::vector<BenchPoint> points;
+  {
+    Progress progress(err, static_cast<long>(scenes.size() * options.rates.size() * options.iterations.size()));
+    for (BenchScene& scene : scenes) {
+      for (double rate : options.rates) {
+        for (int it : options.iterations) {
+          if (interrupt.requested()) break;
+          Settings settings = scene.scenario().settings;
+          settings.timestep = 1.0 / rate;
+          settings.iterations = it;
+          BenchPoint p{scene.name(), settings.timestep, it};
+          scene.run(settings);  // warm-up (and the reference run, once)
+          std::vector<double> costs;
+          for (int r = 0; r < options.repeats; ++r) {
+            const BenchScene::Run run = scene.run(settings);
+            costs.push_back(1000.0 * run.wallSeconds / std::max(run.simSeconds, settings.timestep));
+            p.error = run.error;
+            p.complete = p.complete && run.complete;
+          }
+          p.costMs = median(costs);
+          p.spread = (*std::max_element(costs.begin(), costs.end()) - *std::min_element(costs.begin(), costs.end())) /
+                     p.costMs;
+          points.push_back(p);
+          progress.advance(scene.name() + " " + fixed(rate, 0) + " Hz");
+        }
+      }
+    }
+  }
+  markParetoFronts(points);
+
+  if (options.json) {
+    nlohmann::json all = nlohmann::json::array();
+    for (const BenchPoint& p : points) {
+      all.push_back({{"scene", p.scene}, {"timestep", p.timestep}, {"iterations", p.iterations},
+                     {"cost_ms_per_s", p.costMs}, {"spread", p.spread}, {"error_m", p.error},
+                     {"complete", p.complete}, {"front", p.front}});
+    }
+    out << all.dump(2) << "\n";
+  } else {
+    for (std::size_t i = 0; i < scenes.size(); ++i) {
+      out << (i ? "\n" : "") << table(points, scenes[i].name(), scenes[i].analytic());
+    }
+  }
+  int status = kExitOk;
+  if (options.outDir) {
+    const std::filesystem::path dir(*options.outDir);
+    std::string problem = AtomicFile::write((dir / "bench.csv").string(), csv(points));
+    for (std::size_t i = 0; problem.empty() && i < scenes.size(); ++i) {
+      problem = writeGnuplotFile((dir / ("bench_" + scenes[i].name() + ".png")).string(),
+                                 plotScript(points, scenes[i].name(), options.iterations), 900, 640);
+    }
+    if (!problem.empty()) {
+      err << "tabletop bench: " << problem << "\n";
+      status = kExitFailure;
+    }
+  }
+  if (interrupt.requested()) {
+    err << "tabletop bench: interrupted; the " << points.size() << " settings measured are above"
+        << (options.outDir ? " and in " + *options.outDir : std::string()) << "\n";
+    return kExitInterrupted;
+  }
+  return status;
+}
+
+}  // namespace tabletop

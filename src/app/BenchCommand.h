@@ -1,0 +1,39 @@
+#pragma once
+
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+}
+
+namespace tabletop {
+
+/// What `tabletop bench` was asked to do.
+struct BenchOptions {
+  std::vector<std::string> scenarios;  ///< scene files; default: the analytic cases and the report's examples
+  std::string scenarioDir = "scenarios";  ///< --scenarios: where the default scenes are
+  std::optional<std::string> cases;    ///< --cases: only scenes whose name contains this
+  std::optional<std::string> outDir;   ///< --out: CSV and plots
+  bool json = false;
+  int repeats = 5;                     ///< timed runs per setting, after one warm-up
+  std::vector<double> rates{30, 60, 120, 240, 480, 1000, 2000, 4000};  ///< Hz
+  std::vector<int> iterations{4, 10, 20, 50};
+};
+
+/// Declares bench's options on `command`.
+void addBenchOptions(CLI::App& command, BenchOptions& options);
+
+/// Sweeps every scene over the timesteps and solver iterations: for each
+/// setting, the median wall time per simulated second of `repeats` runs
+/// (after a warm-up, with the spread) and the error (against the closed
+/// form, or against a run at 4000 Hz and 50 iterations). Prints a table
+/// per scene with its Pareto front of cost and error; with --out writes
+/// DIR/bench.csv and a log-log plot of error against cost per scene
+/// (DIR/bench_SCENE.png, one curve per iteration count). Ctrl-C stops the
+/// sweep, keeps what was measured and writes it (status 130).
+int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err);
+
+}  // namespace tabletop

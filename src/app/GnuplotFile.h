@@ -1,0 +1,16 @@
+#pragma once
+
+#include <string>
+
+namespace tabletop {
+
+/// Draws a picture with gnuplot (Debian's gnuplot-nox) into `path`, whole
+/// or not at all: `script` holds everything but the terminal and the
+/// output, which are set here from the file's extension (.png or .svg).
+/// Returns "" or what went wrong, in one line.
+std::string writeGnuplotFile(const std::string& path, const std::string& script, int width, int height);
+
+/// `s` as a gnuplot single-quoted string.
+std::string gnuplotQuoted(const std::string& s);
+
+}  // namespace tabletop
