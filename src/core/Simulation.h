@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/Arrow.h"
+#include "core/BodyMotion.h"
 #include "core/EntityState.h"
 #include "core/Event.h"
 #include "core/Vec3.h"
@@ -33,6 +34,15 @@ class Simulation {
   virtual bool allAtRest() const = 0;
   /// Every entity's state, in scenario order.
   virtual std::vector<EntityState> snapshot() const = 0;
+  /// Every entity's motion, in scenario order: what snapshot() says of
+  /// it, cheaper, for checks made after every step.
+  virtual std::vector<BodyMotion> motions() const {
+    std::vector<BodyMotion> out;
+    for (const EntityState& s : snapshot()) {
+      out.push_back({s.position, s.orientation, s.linearVelocity, s.angularVelocity});
+    }
+    return out;
+  }
   /// Everything that happened so far, in time order.
   virtual const std::vector<Event>& events() const = 0;
   /// Where bodies touch now, in metres, for drawing (none in modes without

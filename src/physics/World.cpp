@@ -401,22 +401,36 @@ void World::observe(bool emit) {
   }
 }
 
-std::vector<EntityState> World::snapshot() const {
-  std::vector<EntityState> states;
-  states.reserve(entities_.size());
+std::vector<BodyMotion> World::motions() const {
+  std::vector<BodyMotion> out;
+  out.reserve(entities_.size());
   for (const auto& e : entities_) {
     const btRigidBody* body = e->body();
     const btQuaternion q = body->getWorldTransform().getRotation();
+    out.push_back({toVec3(body->getWorldTransform().getOrigin()),
+                   {q.w(), q.x(), q.y(), q.z()},
+                   toVec3(body->getLinearVelocity()),
+                   toVec3(body->getAngularVelocity())});
+  }
+  return out;
+}
+
+std::vector<EntityState> World::snapshot() const {
+  const std::vector<BodyMotion> moving = motions();
+  std::vector<EntityState> states;
+  states.reserve(entities_.size());
+  for (std::size_t i = 0; i < entities_.size(); ++i) {
+    const Shape& e = *entities_[i];
     EntityState s;
-    s.name = e->name();
-    s.shape = e->kind();
-    s.position = toVec3(body->getWorldTransform().getOrigin());
-    s.orientation = {q.w(), q.x(), q.y(), q.z()};
-    s.yawDegrees = e->yawDegrees();
-    s.linearVelocity = toVec3(body->getLinearVelocity());
-    s.angularVelocity = toVec3(body->getAngularVelocity());
-    s.status = e->status();
-    s.support = e->support();
+    s.name = e.name();
+    s.shape = e.kind();
+    s.position = moving[i].position;
+    s.orientation = moving[i].orientation;
+    s.yawDegrees = e.yawDegrees();
+    s.linearVelocity = moving[i].linearVelocity;
+    s.angularVelocity = moving[i].angularVelocity;
+    s.status = e.status();
+    s.support = e.support();
     states.push_back(s);
   }
   return states;

@@ -76,6 +76,7 @@ class World : public Simulation {
   long steps() const override { return steps_; }
   bool allAtRest() const override;
   std::vector<EntityState> snapshot() const override;
+  std::vector<BodyMotion> motions() const override;
   const std::vector<Event>& events() const override { return events_; }
   std::vector<Vec3> contactPoints() const override;
 

@@ -70,7 +70,7 @@ AnalyticResult AnalyticCase::run(const Scenario& s, const Settings& settings, Si
   const double level = a.shape == ShapeKind::Sphere ? a.size.at(0) : 0.5 * a.size.at(0);
   Vec3 previous{a.position.x, s.table.height + level, a.position.z};
   const auto watch = [&](const Simulation& sim) {
-    const Vec3 p = sim.snapshot().front().position;
+    const Vec3 p = sim.motions().front().position;
     if (!landingX && p.y <= level + 1e-9 && previous.y > level) {
       const double f = (previous.y - level) / (previous.y - p.y);
       landingX = previous.x + f * (p.x - previous.x);

@@ -52,8 +52,9 @@ DivergenceError::DivergenceError(std::string entity, double time, std::string qu
       quantity_(std::move(quantity)) {}
 
 DivergenceGuard::DivergenceGuard(const Scenario& scenario, const Settings& settings,
-                                 const std::vector<EntityState>& start) {
+                                 const std::vector<BodyMotion>& start) {
   for (const EntitySpec& e : scenario.entities) {
+    names_.push_back(e.name);
     masses_.push_back(e.mass);
     radii_.push_back(boundingRadius(e));
   }
@@ -70,7 +71,7 @@ DivergenceGuard::DivergenceGuard(const Scenario& scenario, const Settings& setti
   energy_ += kineticEnergy(start);
 }
 
-double DivergenceGuard::kineticEnergy(const std::vector<EntityState>& states) const {
+double DivergenceGuard::kineticEnergy(const std::vector<BodyMotion>& states) const {
   double e = 0.0;
   for (std::size_t i = 0; i < states.size() && i < masses_.size(); ++i) {
     e += 0.5 * masses_[i] * states[i].linearVelocity.dot(states[i].linearVelocity);
@@ -78,7 +79,7 @@ double DivergenceGuard::kineticEnergy(const std::vector<EntityState>& states) co
   return e;
 }
 
-void DivergenceGuard::pushed(const std::vector<EntityState>& before, const std::vector<EntityState>& after) {
+void DivergenceGuard::pushed(const std::vector<BodyMotion>& before, const std::vector<BodyMotion>& after) {
   energy_ += std::max(0.0, kineticEnergy(after) - kineticEnergy(before));
 }
 
@@ -90,12 +91,12 @@ double DivergenceGuard::angularSpeedBound() const {
   return (kSafety * std::sqrt(5.0) * std::sqrt(2.0 * energy_ / lightest_) + kSlack) / smallest_;
 }
 
-void DivergenceGuard::check(const std::vector<EntityState>& states, double time) const {
+void DivergenceGuard::check(const std::vector<BodyMotion>& states, double time) const {
   const double vMax = speedBound(), wMax = angularSpeedBound();
   for (std::size_t i = 0; i < states.size(); ++i) {
-    const EntityState& s = states[i];
+    const BodyMotion& s = states[i];
     const auto fail = [&](const std::string& quantity, const std::string& detail) {
-      throw DivergenceError(s.name, time, quantity, detail);
+      throw DivergenceError(i < names_.size() ? names_[i] : std::to_string(i), time, quantity, detail);
     };
     if (!finite(s.position)) fail("position", "position is not finite " + shown(s.position));
     if (!finite(s.linearVelocity)) fail("velocity", "velocity is not finite " + shown(s.linearVelocity));

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "core/EntityState.h"
+#include "core/BodyMotion.h"
 #include "core/Settings.h"
 #include "scenario/Scenario.h"
 
@@ -52,21 +52,24 @@ class DivergenceGuard {
   static constexpr double kSlack = 0.5;          ///< m/s: a body dropped while a push is set up
   static constexpr double kWorldRadius = 1e5;   ///< m: ten times the largest accepted coordinate
 
-  DivergenceGuard(const Scenario& scenario, const Settings& settings, const std::vector<EntityState>& start);
+  /// `start`: every entity's motion at the start, in scenario order (as
+  /// every argument below).
+  DivergenceGuard(const Scenario& scenario, const Settings& settings, const std::vector<BodyMotion>& start);
 
   /// Records the energy a push gave: the states just before and just
   /// after it.
-  void pushed(const std::vector<EntityState>& before, const std::vector<EntityState>& after);
+  void pushed(const std::vector<BodyMotion>& before, const std::vector<BodyMotion>& after);
   /// Throws DivergenceError naming the first body out of bounds.
-  void check(const std::vector<EntityState>& states, double time) const;
+  void check(const std::vector<BodyMotion>& states, double time) const;
 
   double energyBound() const { return energy_; }  ///< J
   double speedBound() const;                       ///< m/s
   double angularSpeedBound() const;                ///< rad/s
 
  private:
-  double kineticEnergy(const std::vector<EntityState>& states) const;
+  double kineticEnergy(const std::vector<BodyMotion>& states) const;
 
+  std::vector<std::string> names_;  ///< in scenario order
   std::vector<double> masses_;  ///< kg, in scenario order
   std::vector<double> radii_;   ///< m, bounding radius of each body
   double lightest_ = 1.0;       ///< kg

@@ -20,7 +20,7 @@ ScriptPlayer::ScriptPlayer(const Scenario& scenario, const Settings& settings, S
       settings_(settings),
       simulation_(simulation),
       afterStep_(std::move(afterStep)),
-      guard_(scenario, settings, simulation.snapshot()) {}
+      guard_(scenario, settings, simulation.motions()) {}
 
 bool ScriptPlayer::durationReached() const {
   return simulation_.time() >= settings_.duration - kTimeSlack;
@@ -81,9 +81,9 @@ void ScriptPlayer::carryOut(const Action& action) {
 }
 
 void ScriptPlayer::push(const Arrow& arrow, const PushMagnitude& magnitude) {
-  const std::vector<EntityState> before = simulation_.snapshot();
+  const std::vector<BodyMotion> before = simulation_.motions();
   simulation_.push(arrow, magnitude);
-  guard_.pushed(before, simulation_.snapshot());
+  guard_.pushed(before, simulation_.motions());
   lastArrow_ = arrow;
   ++pushes_;
 }
@@ -98,7 +98,7 @@ std::optional<Arrow> ScriptPlayer::arrow() const {
 
 void ScriptPlayer::step() {
   simulation_.step();
-  guard_.check(simulation_.snapshot(), simulation_.time());
+  guard_.check(simulation_.motions(), simulation_.time());
   if (afterStep_) afterStep_(simulation_);
   runDue();
 }

@@ -24,9 +24,10 @@ Scenario twoBodies() {
                                   "two.json");
 }
 
-EntityState at(const std::string& name, double y, Vec3 v = {}, Vec3 w = {}) {
-  EntityState s;
-  s.name = name;
+// The motion of the entity `name` (A first, S second, as in the scene).
+BodyMotion at(const std::string& name, double y, Vec3 v = {}, Vec3 w = {}) {
+  (void)name;
+  BodyMotion s;
   s.position = {0.0, y, 0.0};
   s.linearVelocity = v;
   s.angularVelocity = w;
@@ -73,7 +74,7 @@ TEST(DivergenceGuard, NonFiniteFarAndUnderTheFloorAreCaught) {
   const Scenario s = twoBodies();
   const DivergenceGuard g(s, s.settings, {at("A", 0.8), at("S", 0.8)});
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  const auto quantity = [&](const EntityState& a) {
+  const auto quantity = [&](const BodyMotion& a) {
     try {
       g.check({a, at("S", 0.8)}, 0.5);
     } catch (const DivergenceError& d) {
