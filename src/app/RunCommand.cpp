@@ -13,6 +13,7 @@
 #include "sim/ResultFormat.h"
 #include "sim/SceneBuilder.h"
 #include "sim/ScriptRunner.h"
+#include "sim/TraceWriter.h"
 
 namespace tabletop {
 
@@ -29,6 +30,12 @@ void addRunOptions(CLI::App& command, RunOptions& options, bool withMode) {
       ->check(CLI::Range(kMinTimestep, kMaxTimestep));
   command.add_option("--iterations", options.iterations, "Solver iterations per step (overrides the scenario)")
       ->check(CLI::Range(1, 10000));
+  std::map<std::string, Integrator> integrators;
+  for (Integrator i : kAllIntegrators) integrators.emplace(std::string(toString(i)), i);
+  command.add_option("--integrator", options.integrator,
+                     "How positions follow velocities: trapezoid (second order, the default) or euler "
+                     "(Bullet's own); overrides the scenario")
+      ->transform(CLI::CheckedTransformer(integrators));
   command.add_option("--duration", options.duration, "Longest simulated time in seconds (overrides the scenario)")
       ->check(CLI::PositiveNumber & CLI::Range(0.0, 3600.0));
 }
@@ -39,6 +46,7 @@ Scenario loadScenario(const ScenarioSource& source, const RunOptions& options, S
   settings = scenario.settings;
   if (options.timestep) settings.timestep = *options.timestep;
   if (options.iterations) settings.iterations = *options.iterations;
+  if (options.integrator) settings.integrator = *options.integrator;
   if (options.duration) settings.duration = *options.duration;
   const std::string tooLong = ScenarioLoader::stepCountProblem(settings);
   if (!tooLong.empty()) throw ScenarioError(source.name, {{"/settings", tooLong + " with the command line's settings"}});
@@ -46,20 +54,43 @@ Scenario loadScenario(const ScenarioSource& source, const RunOptions& options, S
 }
 
 int runScenarios(const RunOptions& options, std::ostream& out, std::ostream& err) {
+  if (options.traceFile && options.scenarios.size() != 1) {
+    err << "tabletop run: --trace: expected one scenario, got " << options.scenarios.size() << "\n";
+    return kExitBadInput;
+  }
   std::vector<RunResult> results;
   bool failed = false;
+  std::optional<TraceWriter> trace;
   for (const ScenarioSource& source : options.scenarios) {
     try {
       Settings settings;
       const Scenario scenario = loadScenario(source, options, settings);
       std::unique_ptr<Simulation> simulation = buildSimulation(scenario, settings, options.mode);
-      results.push_back(runScript(scenario, settings, *simulation));
+      StepObserver observer;
+      if (options.traceFile) {
+        std::vector<std::string> names;
+        for (const EntitySpec& e : scenario.entities) names.push_back(e.name);
+        trace.emplace(*options.traceFile, std::move(names));
+        if (!trace->problem().empty()) {
+          err << "tabletop run: --trace: " << trace->problem() << "\n";
+          return kExitFailure;
+        }
+        trace->record(*simulation);
+        observer = [&trace](const Simulation& s) { trace->record(s); };
+      }
+      results.push_back(runScript(scenario, settings, *simulation, observer));
     } catch (const ScenarioError& e) {
       for (const std::string& line : e.lines()) err << line << "\n";
       failed = true;
     }
   }
   if (failed) return kExitBadInput;
+  if (trace) {
+    if (const std::string problem = trace->commit(); !problem.empty()) {
+      err << "tabletop run: --trace: " << problem << "\n";
+      return kExitFailure;
+    }
+  }
   int status = kExitOk;
   for (const RunResult& r : results) {
     if (!r.complete) {

@@ -37,8 +37,10 @@ struct RunOptions {
   SimulationMode mode = SimulationMode::Bullet;
   std::optional<double> timestep;
   std::optional<int> iterations;
+  std::optional<Integrator> integrator;
   std::optional<double> duration;
   std::optional<std::string> outFile;  ///< write the output here, whole or not at all
+  std::optional<std::string> traceFile;  ///< write every step's motions here (CSV), for one scenario
 };
 
 /// Declares run's options (all but the scenario list) on `command`; with

@@ -45,6 +45,9 @@ int main(int argc, char** argv) {
   addRunOptions(*runCommand, run);
   runCommand->add_option("--out", run.outFile,
                          "Write the output to FILE instead of standard output (whole or not at all)");
+  runCommand->add_option("--trace", run.traceFile,
+                         "Write every entity's position, orientation and velocities after every step to "
+                         "FILE (CSV, SI units; one scenario)");
   runCommand->callback([&] {
     for (const std::string& f : files) run.scenarios.push_back({f, std::nullopt});
     status = runScenarios(run, std::cout, std::cerr);

@@ -1,5 +1,7 @@
 #pragma once
 
+#include "core/Integrator.h"
+
 namespace tabletop {
 
 /// The timesteps and run lengths every mode accepts: a step from 10 us to
@@ -19,6 +21,7 @@ struct Settings {
   double gravity = 9.81;          ///< m/s^2, acting along -Y
   bool endAtRest = true;          ///< stop once the script is done and all is at rest
   bool sleeping = false;          ///< let Bullet deactivate bodies at rest
+  Integrator integrator = Integrator::Trapezoid;  ///< how positions follow velocities
 };
 
 }  // namespace tabletop

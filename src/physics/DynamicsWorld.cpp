@@ -28,7 +28,15 @@ void keepDeepestPoint(btPersistentManifold& manifold) {
 
 }  // namespace
 
+// Bullet calls this first in a step, before any velocity changes: the
+// velocities the second-order update starts from are read here.
 void DynamicsWorld::applyGravity() {
+  if (smoothAcceleration_ > 0) {
+    startVelocities_.resize(static_cast<std::size_t>(m_nonStaticRigidBodies.size()));
+    for (int i = 0; i < m_nonStaticRigidBodies.size(); ++i) {
+      startVelocities_[static_cast<std::size_t>(i)] = m_nonStaticRigidBodies[i]->getLinearVelocity();
+    }
+  }
   btDiscreteDynamicsWorld::applyGravity();
   applyRollingResistance();
 }
@@ -106,6 +114,21 @@ void DynamicsWorld::applyRollingResistance() {
       if (a->getInvMass() != 0) a->applyTorqueImpulse(-axis * impulse);
       if (b->getInvMass() != 0) b->applyTorqueImpulse(axis * impulse);
     }
+  }
+}
+
+void DynamicsWorld::integrateTransforms(btScalar timeStep) {
+  btDiscreteDynamicsWorld::integrateTransforms(timeStep);
+  if (!(smoothAcceleration_ > 0)) return;
+  const btScalar limit = smoothAcceleration_ * timeStep;
+  for (int i = 0; i < m_nonStaticRigidBodies.size(); ++i) {
+    btRigidBody* body = m_nonStaticRigidBodies[i];
+    if (!body->isActive() || body->isStaticOrKinematicObject()) continue;
+    const btVector3 change = body->getLinearVelocity() - startVelocities_[static_cast<std::size_t>(i)];
+    if (change.length2() > limit * limit) continue;  // an impact: keep Bullet's update
+    btTransform pose = body->getWorldTransform();
+    pose.setOrigin(pose.getOrigin() - change * (timeStep / 2));
+    body->proceedToTransform(pose);
   }
 }
 

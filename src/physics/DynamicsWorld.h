@@ -1,5 +1,7 @@
 #pragma once
 
+#include <vector>
+
 #include <btBulletDynamicsCommon.h>
 
 namespace tabletop {
@@ -26,17 +28,44 @@ namespace tabletop {
 ///    row on rolling friction, so it goes too). N dt is the contact's
 ///    normal impulse of the previous step. Bodies carry their Material in
 ///    their user pointer; Bullet's own rolling and spinning friction are 0.
+///
+/// And, when asked, one change to its integration:
+///
+/// 3. Second-order positions. Bullet moves a body by x += v1 dt with the
+///    velocity v1 at the end of the step (semi-implicit Euler). Under a
+///    steady acceleration a (gravity, sliding friction) that is short by
+///    a dt^2 / 2 every step, a T dt / 2 after a time T: 8 mm of a 0.4 s
+///    fall at 240 Hz, the whole error of free flight and of a sliding
+///    sphere. With the trapezoid rule, x += (v0 + v1) dt / 2, the position
+///    is exact for any acceleration that is constant through the step. The
+///    rule is right only where the velocity changed smoothly; an impact
+///    changes it at an instant, and averaging would move the body back
+///    into what it struck. So a body's position is corrected by
+///    -(v1 - v0) dt / 2 only when its velocity changed by no more than a
+///    smooth force can give in one step (setSmoothAcceleration); larger
+///    changes keep Bullet's update. Orientations keep Bullet's update.
 class DynamicsWorld : public btDiscreteDynamicsWorld {
  public:
   using btDiscreteDynamicsWorld::btDiscreteDynamicsWorld;
 
+  /// Turns the second-order position update on for velocity changes up
+  /// to `limit` m/s^2 times the step (0 turns it off, the default).
+  void setSmoothAcceleration(double limit) { smoothAcceleration_ = limit; }
+  double smoothAcceleration() const { return smoothAcceleration_; }
+
   void solveConstraints(btContactSolverInfo& solverInfo) override;
-  /// Adds gravity to the forces of the coming step, and applies the
-  /// rolling-resistance impulses.
+  /// Reads the velocities a step starts from, adds gravity to the forces
+  /// of the coming step, and applies the rolling-resistance impulses.
   void applyGravity() override;
+
+ protected:
+  void integrateTransforms(btScalar timeStep) override;
 
  private:
   void applyRollingResistance();
+
+  double smoothAcceleration_ = 0.0;
+  std::vector<btVector3> startVelocities_;  // per non-static body, at the step's start
 };
 
 }  // namespace tabletop

@@ -10,10 +10,12 @@ namespace tabletop {
 namespace {
 
 // btBoxShape keeps its outer size: the margin is taken from inside the half
-// extents, so the box is exact for box-box and box-plane contacts.
+// extents, so the box is exact for box-box and box-plane contacts. Its faces
+// and edges are built for polyhedral clipping (see World: box-box contacts).
 std::unique_ptr<btCollisionShape> makeBox(const btVector3& half, double margin) {
   auto box = std::make_unique<btBoxShape>(half);
   box->setMargin(margin);
+  box->initializePolyhedralFeatures();
   return box;
 }
 

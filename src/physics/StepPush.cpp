@@ -21,14 +21,15 @@ double rollingDistance(double v0, double mu, double rf, double radius, double gr
 }
 
 double stepLaunchSpeed(const Shape& shape, double step, const Material& contact, double gravity,
-                       double timestep) {
+                       double timestep, Integrator integrator) {
   const double mu = contact.friction;
   if (!(mu > 0.0)) {
     throw std::invalid_argument("entity '" + shape.name() +
                                 "' has no friction with the table, so a push by step never stops");
   }
   if (shape.kind() != ShapeKind::Sphere) {
-    return std::sqrt(step / slidingDistance(1.0, mu, gravity)) + 0.5 * mu * gravity * timestep;
+    const double offset = integrator == Integrator::Euler ? 0.5 * mu * gravity * timestep : 0.0;
+    return std::sqrt(step / slidingDistance(1.0, mu, gravity)) + offset;
   }
   const double r = static_cast<const Sphere&>(shape).radius();
   const double rf = contact.rollingFriction;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/Integrator.h"
 #include "core/Material.h"
 
 namespace tabletop {
@@ -27,20 +28,23 @@ double rollingDistance(double v0, double mu, double rf, double radius, double gr
 /// contact coefficients with it are `contact`, to travel `step` metres and
 /// stop. Both distances above grow as v0^2, so v0 = sqrt(step / d(1)).
 ///
-/// Bullet integrates positions with the velocity at the end of each step
-/// (semi-implicit Euler): that is the leapfrog scheme, exact for constant
-/// accelerations, once velocities are read as belonging to mid-steps. A
-/// push at time t therefore sets the velocity of t + dt/2, and a sliding
-/// body's launch speed is raised by mu g dt / 2; without it a step falls
-/// short by v0 dt / 2 (5% of a 0.2 m step at mu = 0.4 and 60 Hz).
-/// A sphere takes no offset: measured, the plain closed form lands within
-/// +0.95% at 60 Hz and +0.22% at 240 Hz, while either half-step offset
-/// (of the slip or of the rolling phase) overshoots (+12%, +2.9% at 60 Hz).
-/// What remains is first order in dt and comes from the slip phase.
+/// With the trapezoid integrator the closed form is the launch speed: a
+/// sliding body stops exactly where v0^2 / (2 mu g) puts it.
+///
+/// With Bullet's own semi-implicit Euler, positions move with the velocity
+/// at the end of each step: that is the leapfrog scheme, exact for
+/// constant accelerations once velocities are read as belonging to
+/// mid-steps. A push at time t then sets the velocity of t + dt/2, and a
+/// sliding body's launch speed is raised by mu g dt / 2; without it a step
+/// falls short by v0 dt / 2 (5% of a 0.2 m step at mu = 0.4 and 60 Hz). A
+/// sphere takes no offset there: measured, the plain closed form lands
+/// within +0.95% at 60 Hz and +0.22% at 240 Hz, while either half-step
+/// offset overshoots (+12%, +2.9% at 60 Hz); what remains is the slip
+/// phase's first-order error.
 ///
 /// Throws std::invalid_argument when no finite step can be reached
 /// (no friction; a sphere without rolling friction, or with rf >= mu r).
 double stepLaunchSpeed(const Shape& shape, double step, const Material& contact, double gravity,
-                       double timestep);
+                       double timestep, Integrator integrator);
 
 }  // namespace tabletop

@@ -94,6 +94,7 @@ class World : public Simulation {
 
   Shape& entity(const std::string& name);
   void start();
+  void updateSmoothAcceleration();
   void observe(bool emit);
   void record(const Event& e);
   std::string participantName(const btCollisionObject* object) const;

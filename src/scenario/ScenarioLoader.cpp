@@ -247,6 +247,14 @@ Settings readSettings(const json& j, std::vector<Problem>& problems) {
   s.gravity = f.number("gravity", kGravity, s.gravity);
   s.endAtRest = f.boolean("end_at_rest", s.endAtRest);
   s.sleeping = f.boolean("sleeping", s.sleeping);
+  if (f.has("integrator")) {
+    const std::string name = f.string("integrator", "");
+    if (const auto i = integratorFromString(name)) {
+      s.integrator = *i;
+    } else if (!name.empty()) {
+      f.fail(f.at("integrator"), "expected \"euler\" or \"trapezoid\", got \"" + name + "\"");
+    }
+  }
   f.finish();
   if (f.valid()) {
     const std::string tooLong = ScenarioLoader::stepCountProblem(s);

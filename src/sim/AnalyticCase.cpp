@@ -64,18 +64,27 @@ AnalyticResult AnalyticCase::run(const Scenario& s, const Settings& settings, Si
   const EntitySpec& a = entity(s, 0);
   auto simulation = buildSimulation(s, settings, mode);
 
-  // Where the first entity's centre first comes down to `level` (linear
-  // between the steps either side), for the projectile.
+  // Where the first entity's centre first comes down to `level`, for the
+  // projectile. Steps see the landing only at their ends: the first step
+  // whose vertical velocity rises, once the entity has fallen below the
+  // table top, holds the impact, and the point within that step is where
+  // the entity's own state at the step before meets `level` in free
+  // flight, y + vy t - g t^2 / 2 = level. That is the time of impact
+  // continuous collision detection would report; the state it starts
+  // from is the simulator's, so any error of the flight or of leaving the
+  // edge stays in the measure.
   std::optional<double> landingX;
   const double level = a.shape == ShapeKind::Sphere ? a.size.at(0) : 0.5 * a.size.at(0);
-  Vec3 previous{a.position.x, s.table.height + level, a.position.z};
+  std::optional<BodyMotion> previous;
   const auto watch = [&](const Simulation& sim) {
-    const Vec3 p = sim.motions().front().position;
-    if (!landingX && p.y <= level + 1e-9 && previous.y > level) {
-      const double f = (previous.y - level) / (previous.y - p.y);
-      landingX = previous.x + f * (p.x - previous.x);
+    const BodyMotion now = sim.motions().front();
+    if (!landingX && previous && previous->position.y < s.table.height &&
+        now.linearVelocity.y > previous->linearVelocity.y) {
+      const double y = previous->position.y - level, vy = previous->linearVelocity.y;
+      const double t = (vy + std::sqrt(std::max(0.0, vy * vy + 2.0 * g * y))) / g;
+      landingX = previous->position.x + previous->linearVelocity.x * t;
     }
-    previous = p;
+    previous = now;
   };
 
   AnalyticResult result;

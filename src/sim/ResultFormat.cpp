@@ -59,7 +59,7 @@ std::string formatText(const RunResult& r) {
   std::ostringstream out;
   out << r.scenario << "  (" << r.file << ")\n";
   out << "  mode " << r.mode << ", timestep " << fixed(r.settings.timestep, 6) << " s, "
-      << r.settings.iterations << " iterations; simulated " << fixed(r.simTime, 3) << " s in "
+      << r.settings.iterations << " iterations, " << toString(r.settings.integrator) << " integrator; simulated " << fixed(r.simTime, 3) << " s in "
       << r.steps << " steps (" << fixed(r.wallSeconds, 3) << " s wall)\n";
   if (!r.complete) out << "  INCOMPLETE, the run stopped: " << r.failure << "\n";
   out << "  " << padded("entity", 10) << padded("shape", 9) << padded("x [m]", 9) << padded("y [m]", 9)
@@ -98,6 +98,7 @@ nlohmann::json toJson(const RunResult& r) {
           {"settings",
            {{"timestep", r.settings.timestep},
             {"iterations", r.settings.iterations},
+            {"integrator", toString(r.settings.integrator)},
             {"duration", r.settings.duration},
             {"gravity", r.settings.gravity},
             {"end_at_rest", r.settings.endAtRest},

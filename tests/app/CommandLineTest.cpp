@@ -6,9 +6,11 @@
 #include <csignal>
 
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -87,7 +89,7 @@ TEST(CommandLine, RunTextHonoursOverrides) {
   const Outcome o = run(kBin + "tabletop run " + kScenarios +
                         "example1_single_cube.json --timestep 0.002 --iterations 20 --duration 0.5");
   ASSERT_EQ(o.status, 0) << o.err;
-  EXPECT_NE(o.out.find("timestep 0.002000 s, 20 iterations; simulated 0.500 s in 250 steps"), std::string::npos)
+  EXPECT_NE(o.out.find("timestep 0.002000 s, 20 iterations, trapezoid integrator; simulated 0.500 s in 250 steps"), std::string::npos)
       << o.out;
   EXPECT_NE(o.out.find("push A Left"), std::string::npos);
   EXPECT_NE(o.out.find("state_hash"), std::string::npos);
@@ -299,6 +301,39 @@ TEST(CommandLine, RunOutWritesTheFileWholeOrNotAtAll) {
   EXPECT_EQ(lineCount(o.err), 1) << o.err;
 }
 
+// run --trace writes a row per entity and step, from the initial state to
+// the last step, and the last rows are the final state the run prints.
+TEST(CommandLine, RunTraceWritesEveryStep) {
+  const std::string file = ::testing::TempDir() + "trace.csv";
+  std::filesystem::remove(file);
+  const std::string scene = kScenarios + "analytic/free_flight.json";
+  Outcome o = run(kBin + "tabletop run --json --trace " + file + " " + scene);
+  ASSERT_EQ(o.status, 0) << o.err;
+  const nlohmann::json j = nlohmann::json::parse(o.out);
+  std::ifstream in(file);
+  std::string line, last;
+  std::getline(in, line);
+  EXPECT_EQ(line, "t,step,entity,x,y,z,qw,qx,qy,qz,vx,vy,vz,wx,wy,wz");
+  int rows = 0;
+  while (std::getline(in, line)) {
+    ++rows;
+    last = line;
+  }
+  EXPECT_EQ(rows, j["steps"].get<int>() + 1);  // one entity, the start and every step
+  std::vector<double> fields;
+  std::stringstream cells(last);
+  std::string cell;
+  while (std::getline(cells, cell, ',')) fields.push_back(cell == "A" ? 0.0 : std::stod(cell));
+  ASSERT_EQ(fields.size(), 16u);
+  const nlohmann::json& a = j["entities"][0];
+  EXPECT_DOUBLE_EQ(fields[3], a["position"][0].get<double>());
+  EXPECT_DOUBLE_EQ(fields[4], a["position"][1].get<double>());
+  EXPECT_FALSE(std::filesystem::exists(file + ".part"));
+  o = run(kBin + "tabletop run --trace " + file + " " + scene + " " + scene);
+  EXPECT_EQ(o.status, 2);
+  EXPECT_EQ(lineCount(o.err), 1) << o.err;
+}
+
 // bench sweeps the settings asked for: a table with the front marked, a
 // CSV row per setting and a plot per scene; bad options are status 2.
 TEST(CommandLine, BenchPrintsTheTableAndWritesCsvAndPlot) {
@@ -431,9 +466,16 @@ TEST(CommandLine, RenderMakesFramesAndVideos) {
   Outcome o = run(kBin + "tabletop render " + kScenarios + "example2_two_cubes.json --out " + dir +
                   " --fps 10 --size 160x120 --video " + dir + "/ex2.gif");
   ASSERT_EQ(o.status, 0) << o.err;
-  // Example 2 ends (everything at rest) at 1.621 s: frames 0.0 .. 2.1 s.
-  EXPECT_TRUE(std::filesystem::exists(dir + "/frame_00021.png"));
-  EXPECT_FALSE(std::filesystem::exists(dir + "/frame_00022.png"));
+  // Frames every 0.1 s from 0 to where the run ends (everything at rest)
+  // and half a second more.
+  const double end =
+      nlohmann::json::parse(run(kBin + "tabletop run --json " + kScenarios + "example2_two_cubes.json").out)["sim_time"];
+  const int last = static_cast<int>(std::floor((end + 0.5) * 10.0 + 1e-9));
+  char name[32];
+  std::snprintf(name, sizeof name, "/frame_%05d.png", last);
+  EXPECT_TRUE(std::filesystem::exists(dir + name)) << name;
+  std::snprintf(name, sizeof name, "/frame_%05d.png", last + 1);
+  EXPECT_FALSE(std::filesystem::exists(dir + name)) << name;
   std::ifstream gif(dir + "/ex2.gif", std::ios::binary);
   std::string magic(6, '\0');
   gif.read(magic.data(), 6);

@@ -43,12 +43,12 @@ TEST(StepPush, RollingDistanceMatchesIntegratedMotion) {
 
 TEST(StepPush, RefusesStepsThatNeverStop) {
   Sphere ball("S", 0.03);
-  EXPECT_THROW(stepLaunchSpeed(ball, 0.1, Material{0.4, 0.0, 0.0, 0.0}, kG, 1.0 / 240),
+  EXPECT_THROW(stepLaunchSpeed(ball, 0.1, Material{0.4, 0.0, 0.0, 0.0}, kG, 1.0 / 240, Integrator::Trapezoid),
                std::invalid_argument);
-  EXPECT_THROW(stepLaunchSpeed(ball, 0.1, Material{0.01, 0.001, 0.0, 0.0}, kG, 1.0 / 240),
+  EXPECT_THROW(stepLaunchSpeed(ball, 0.1, Material{0.01, 0.001, 0.0, 0.0}, kG, 1.0 / 240, Integrator::Trapezoid),
                std::invalid_argument);
   Cube cube("C", 0.1);
-  EXPECT_THROW(stepLaunchSpeed(cube, 0.1, Material{0.0, 0.0, 0.0, 0.0}, kG, 1.0 / 240),
+  EXPECT_THROW(stepLaunchSpeed(cube, 0.1, Material{0.0, 0.0, 0.0, 0.0}, kG, 1.0 / 240, Integrator::Trapezoid),
                std::invalid_argument);
 }
 
@@ -84,7 +84,22 @@ TEST_P(StepTravel, TravelsTheStepWithinOnePercent) {
   ASSERT_TRUE(w.allAtRest());
   const btVector3 moved = e.position() - start;
   const Vec3 d = pushDirection(c.angle);
-  EXPECT_NEAR(moved.length(), c.step, 0.01 * c.step);
+  if (!c.sphere) {
+    EXPECT_NEAR(moved.length(), c.step, 0.01 * c.step);
+  } else {
+    // A sphere overshoots by v1 dt, v1 = 5 v0 (mu - rho) / (7 mu - 5 rho)
+    // its speed when it starts to roll (rho = rf / r): its rolling
+    // resistance is applied before each solve, from the spin and the
+    // normal impulse the step starts with, so in the first step after the
+    // push, with neither yet, it is missing, and the ball rolls off
+    // a dt faster (a its rolling deceleration). Measured: +6.9 mm at
+    // 60 Hz, +1.7 mm at 240 Hz, +0.4 mm at 1000 Hz on a 0.2 m step. To
+    // within 10% of that term and 0.1 mm.
+    const double mu = material.friction, rho = material.rollingFriction / size;
+    const double v0 = stepLaunchSpeed(e, c.step, material, kG, c.timestep, Integrator::Trapezoid);
+    const double v1 = 5.0 * v0 * (mu - rho) / (7.0 * mu - 5.0 * rho);
+    EXPECT_NEAR(moved.length() - c.step, v1 * c.timestep, 0.1 * v1 * c.timestep + 1e-4);
+  }
   // Straight along the push, to the same 1%: Gauss-Seidel solves a cube's
   // four corner contacts one after another, so its friction is not quite
   // symmetric within a step (measured: 0.34% of the step at 60 Hz).

@@ -2,6 +2,7 @@
 // each does what the report describes.
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 #include <gtest/gtest.h>
@@ -79,10 +80,17 @@ TEST(ReportExamples, Example1StepsFollowTheArrow) {
 
 // Example 2: A slides alone, meets B, pushes it; B reaches the right edge
 // and drops, A stays on the table. Contact comes before the drop. The
-// cubes are nearly elastic (e = 0.9 for the pair: 0.9 x 0.9 = 0.81), so A
-// stops where it struck B, one side length short of B's start.
+// cubes are elastic (e = 1), so A stops where it struck B, one side length
+// short of B's start, and B goes on along the arrow.
 TEST(ReportExamples, Example2CubePushesTheOtherOffTheTable) {
-  const RunResult r = runExample("example2_two_cubes.json");
+  const Scenario s = ScenarioLoader::loadFile(std::string(TABLETOP_SOURCE_DIR) + "/scenarios/example2_two_cubes.json");
+  auto world = buildWorld(s, s.settings);
+  // B's sideways place when its centre reaches the edge (x = 0.6 m).
+  double bAtEdgeZ = NAN;
+  const RunResult r = runScript(s, s.settings, *world, [&](const Simulation& sim) {
+    const BodyMotion b = sim.motions().at(1);
+    if (std::isnan(bAtEdgeZ) && b.position.x >= 0.6) bAtEdgeZ = b.position.z;
+  });
   const EntityState& a = entity(r, "A");
   const EntityState& b = entity(r, "B");
   EXPECT_EQ(b.status, EntityPositionStatus::FinishDropSimulation);
@@ -97,8 +105,12 @@ TEST(ReportExamples, Example2CubePushesTheOtherOffTheTable) {
   EXPECT_EQ(r.events[leaves].edge, "Right");
   EXPECT_LT(leaves, firstEvent(r, EventType::Lands, "B"));
   EXPECT_EQ(r.events[firstEvent(r, EventType::Lands, "B")].on, "ground");
-  // Both moved along the arrow: sideways drift under 3 cm.
-  EXPECT_LT(std::abs(b.position.z), 0.03);
+  // Both moved along the arrow. B drifts 2.7 mm sideways over its 0.4 m
+  // on the table (measured): the impact's four face points are solved one
+  // after another, so its impulse is not quite central. Its tumble off the
+  // edge and onto the floor is not along anything, and is not checked.
+  EXPECT_LT(std::abs(a.position.z), 1e-3);
+  EXPECT_LT(std::abs(bAtEdgeZ), 5e-3);
   expectTimeOrder(r);
 }
 
