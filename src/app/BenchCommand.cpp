@@ -69,8 +69,9 @@ class Progress {
 
 std::string table(const std::vector<BenchPoint>& points, const std::string& scene, bool analytic) {
   std::ostringstream o;
-  o << scene << "  (error against " << (analytic ? "the closed form" : "a run at 4000 Hz, 50 iterations") << ")\n";
-  o << "  " << padded("rate [Hz]", 11) << padded("iterations", 12) << padded("cost [ms/s]", 13)
+  o << scene << "  (error against " << (analytic ? "the closed form" : "a run at 4000 Hz, 50 iterations, trapezoid") << ")\n";
+  o << "  " << padded("rate [Hz]", 11) << padded("iterations", 12) << padded("integrator", 12)
+    << padded("cost [ms/s]", 13)
     << padded("spread", 9) << padded("error [mm]", 12) << "front\n";
   std::vector<BenchPoint> rows;
   for (const BenchPoint& p : points) {
@@ -79,7 +80,7 @@ std::string table(const std::vector<BenchPoint>& points, const std::string& scen
   std::sort(rows.begin(), rows.end(), [](const BenchPoint& a, const BenchPoint& b) { return a.costMs < b.costMs; });
   for (const BenchPoint& p : rows) {
     o << "  " << padded(fixed(1.0 / p.timestep, 0), 11) << padded(std::to_string(p.iterations), 12)
-      << padded(fixed(p.costMs, 3), 13) << padded(fixed(100.0 * p.spread, 0) + "%", 9)
+      << padded(std::string(toString(p.integrator)), 12) << padded(fixed(p.costMs, 3), 13) << padded(fixed(100.0 * p.spread, 0) + "%", 9)
       << padded(p.complete ? fixed(1000.0 * p.error, 4) : std::string("diverged"), 12) << (p.front ? "*" : "")
       << "\n";
   }
@@ -88,9 +89,11 @@ std::string table(const std::vector<BenchPoint>& points, const std::string& scen
 
 std::string csv(const std::vector<BenchPoint>& points) {
   std::ostringstream o;
-  o << std::setprecision(9) << "scene,rate_hz,timestep_s,iterations,cost_ms_per_s,spread,error_m,complete,front\n";
+  o << std::setprecision(9)
+    << "scene,rate_hz,timestep_s,iterations,integrator,cost_ms_per_s,spread,error_m,complete,front\n";
   for (const BenchPoint& p : points) {
-    o << p.scene << "," << 1.0 / p.timestep << "," << p.timestep << "," << p.iterations << "," << p.costMs << ","
+    o << p.scene << "," << 1.0 / p.timestep << "," << p.timestep << "," << p.iterations << "," << toString(p.integrator)
+      << "," << p.costMs << ","
       << p.spread << "," << p.error << "," << p.complete << "," << p.front << "\n";
   }
   return o.str();
@@ -98,23 +101,27 @@ std::string csv(const std::vector<BenchPoint>& points) {
 
 // error [mm] against cost [ms per simulated second], log-log, one curve
 // per iteration count, the front circled.
-std::string plotScript(const std::vector<BenchPoint>& points, const std::string& scene, const std::vector<int>& its) {
+std::string plotScript(const std::vector<BenchPoint>& points, const std::string& scene, const std::vector<int>& its,
+                       const std::vector<Integrator>& integrators) {
   std::ostringstream g;
   g << std::setprecision(9);
   g << "set title " << gnuplotQuoted(scene + ": error against cost (Bullet, double)") << " noenhanced\n";
   g << "set logscale xy\nset grid\nset key top right\n";
   g << "set xlabel 'wall time per simulated second [ms]'\nset ylabel 'error [mm]'\n";
   std::vector<std::string> curves;
-  for (int it : its) {
-    g << "$i" << it << " << EOD\n";
-    for (const BenchPoint& p : points) {
-      if (p.scene == scene && p.iterations == it && p.complete) {
-        g << p.costMs << " " << std::max(1e-6, 1000.0 * p.error) << " " << 1.0 / p.timestep << "\n";
+  for (Integrator integrator : integrators) {
+    for (int it : its) {
+      const std::string block = "$" + std::string(toString(integrator)) + std::to_string(it);
+      g << block << " << EOD\n";
+      for (const BenchPoint& p : points) {
+        if (p.scene == scene && p.iterations == it && p.integrator == integrator && p.complete) {
+          g << p.costMs << " " << std::max(1e-6, 1000.0 * p.error) << " " << 1.0 / p.timestep << "\n";
+        }
       }
+      g << "EOD\n";
+      curves.push_back(block + " using 1:2 with linespoints title '" + std::string(toString(integrator)) + ", " +
+                       std::to_string(it) + " iterations'");
     }
-    g << "EOD\n";
-    curves.push_back("$i" + std::to_string(it) + " using 1:2 with linespoints title '" + std::to_string(it) +
-                     " iterations'");
   }
   g << "$front << EOD\n";
   for (const BenchPoint& p : points) {
@@ -145,6 +152,11 @@ void addBenchOptions(CLI::App& command, BenchOptions& options) {
   command.add_option("--iterations", options.iterations, "Solver iterations to sweep (default 4,10,20,50)")
       ->delimiter(',')
       ->check(CLI::Range(1, 10000));
+  std::map<std::string, Integrator> integrators;
+  for (Integrator i : kAllIntegrators) integrators.emplace(std::string(toString(i)), i);
+  command.add_option("--integrators", options.integrators, "Integrators to sweep (default euler,trapezoid)")
+      ->delimiter(',')
+      ->transform(CLI::CheckedTransformer(integrators));
 }
 
 int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) {
@@ -179,28 +191,32 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
   const InterruptGuard interrupt;
   std::vector<BenchPoint> points;
   {
-    Progress progress(err, static_cast<long>(scenes.size() * options.rates.size() * options.iterations.size()));
+    Progress progress(err, static_cast<long>(scenes.size() * options.rates.size() * options.iterations.size() *
+                                             options.integrators.size()));
     for (BenchScene& scene : scenes) {
       for (double rate : options.rates) {
         for (int it : options.iterations) {
-          if (interrupt.requested()) break;
-          Settings settings = scene.scenario().settings;
-          settings.timestep = 1.0 / rate;
-          settings.iterations = it;
-          BenchPoint p{scene.name(), settings.timestep, it};
-          scene.run(settings);  // warm-up (and the reference run, once)
-          std::vector<double> costs;
-          for (int r = 0; r < options.repeats; ++r) {
-            const BenchScene::Run run = scene.run(settings);
-            costs.push_back(1000.0 * run.wallSeconds / std::max(run.simSeconds, settings.timestep));
-            p.error = run.error;
-            p.complete = p.complete && run.complete;
+          for (Integrator integrator : options.integrators) {
+            if (interrupt.requested()) break;
+            Settings settings = scene.scenario().settings;
+            settings.timestep = 1.0 / rate;
+            settings.iterations = it;
+            settings.integrator = integrator;
+            BenchPoint p{scene.name(), settings.timestep, it, integrator};
+            scene.run(settings);  // warm-up (and the reference run, once)
+            std::vector<double> costs;
+            for (int r = 0; r < options.repeats; ++r) {
+              const BenchScene::Run run = scene.run(settings);
+              costs.push_back(1000.0 * run.wallSeconds / std::max(run.simSeconds, settings.timestep));
+              p.error = run.error;
+              p.complete = p.complete && run.complete;
+            }
+            p.costMs = median(costs);
+            p.spread = (*std::max_element(costs.begin(), costs.end()) - *std::min_element(costs.begin(), costs.end())) /
+                       p.costMs;
+            points.push_back(p);
+            progress.advance(scene.name() + " " + fixed(rate, 0) + " Hz");
           }
-          p.costMs = median(costs);
-          p.spread = (*std::max_element(costs.begin(), costs.end()) - *std::min_element(costs.begin(), costs.end())) /
-                     p.costMs;
-          points.push_back(p);
-          progress.advance(scene.name() + " " + fixed(rate, 0) + " Hz");
         }
       }
     }
@@ -211,6 +227,7 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
     nlohmann::json all = nlohmann::json::array();
     for (const BenchPoint& p : points) {
       all.push_back({{"scene", p.scene}, {"timestep", p.timestep}, {"iterations", p.iterations},
+                     {"integrator", toString(p.integrator)},
                      {"cost_ms_per_s", p.costMs}, {"spread", p.spread}, {"error_m", p.error},
                      {"complete", p.complete}, {"front", p.front}});
     }
@@ -226,7 +243,7 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
     std::string problem = AtomicFile::write((dir / "bench.csv").string(), csv(points));
     for (std::size_t i = 0; problem.empty() && i < scenes.size(); ++i) {
       problem = writeGnuplotFile((dir / ("bench_" + scenes[i].name() + ".png")).string(),
-                                 plotScript(points, scenes[i].name(), options.iterations), 900, 640);
+                                 plotScript(points, scenes[i].name(), options.iterations, options.integrators), 900, 640);
     }
     if (!problem.empty()) {
       err << "tabletop bench: " << problem << "\n";

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "core/Integrator.h"
+
 namespace CLI {
 class App;
 }
@@ -21,6 +23,7 @@ struct BenchOptions {
   int repeats = 5;                     ///< timed runs per setting, after one warm-up
   std::vector<double> rates{30, 60, 120, 240, 480, 1000, 2000, 4000};  ///< Hz
   std::vector<int> iterations{4, 10, 20, 50};
+  std::vector<Integrator> integrators{Integrator::Euler, Integrator::Trapezoid};
 };
 
 /// Declares bench's options on `command`.

@@ -32,6 +32,7 @@ BenchScene::Run BenchScene::run(const Settings& settings, SimulationMode mode) {
     Settings fine = settings;
     fine.timestep = kReferenceTimestep;
     fine.iterations = kReferenceIterations;
+    fine.integrator = Integrator::Trapezoid;
     auto reference = buildSimulation(scenario_, fine, mode);
     const RunResult ref = runScript(scenario_, fine, *reference);
     reference_.emplace();

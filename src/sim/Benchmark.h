@@ -14,7 +14,8 @@ namespace tabletop {
 
 /// A scene the bench measures: an analytic case (its error against the
 /// closed form) or any other scenario (its error against a reference run
-/// at the finest settings, kReferenceTimestep and kReferenceIterations).
+/// at the finest settings, kReferenceTimestep and kReferenceIterations,
+/// with the trapezoid integrator).
 class BenchScene {
  public:
   static constexpr double kReferenceTimestep = 1.0 / 4000.0;
@@ -47,6 +48,7 @@ struct BenchPoint {
   std::string scene;
   double timestep = 0.0;  ///< s
   int iterations = 0;
+  Integrator integrator = Integrator::Trapezoid;
   double costMs = 0.0;    ///< median wall milliseconds per simulated second
   double spread = 0.0;    ///< (slowest - fastest) / median of the repeats
   double error = 0.0;     ///< m
