@@ -19,3 +19,9 @@ still example3_stacked_cubes 0.6
 still example4_two_spheres 1.0
 "$tabletop" render scenarios/example2_two_cubes.json --out "$work/example2_frames" --fps 20 --size 480x360 \
   --camera corner --video docs/example2_two_cubes.gif
+
+# The speed-against-error plot of the sliding cube: every rate, 10 and 50
+# iterations, both integrators.
+"$tabletop" bench scenarios/analytic/cube_slides_to_rest.json --repeats 5 --rates 30,60,120,240,1000,4000 \
+  --iterations 10,50 --out "$work/bench" > /dev/null
+cp "$work/bench/bench_cube_slides_to_rest.png" docs/bench_cube_slides_to_rest.png
