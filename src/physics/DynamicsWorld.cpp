@@ -12,6 +12,38 @@ bool isSphere(const btCollisionObject* object) {
   return object->getCollisionShape()->getShapeType() == SPHERE_SHAPE_PROXYTYPE;
 }
 
+bool isBox(const btCollisionObject* object) {
+  return object->getCollisionShape()->getShapeType() == BOX_SHAPE_PROXYTYPE;
+}
+
+// A box against a box or against the table: the pairs whose contacts the
+// polyhedral clipping finds in full every step they touch. (Against the
+// ground plane a box gets one new point per step and relies on the points
+// kept from earlier steps.)
+bool isClippedBoxPair(const btPersistentManifold& manifold) {
+  const auto clipped = [](const btCollisionObject* o) {
+    return isBox(o) || o->getCollisionShape()->getShapeType() == COMPOUND_SHAPE_PROXYTYPE;
+  };
+  return (isBox(manifold.getBody0()) || isBox(manifold.getBody1())) && clipped(manifold.getBody0()) &&
+         clipped(manifold.getBody1());
+}
+
+// How far apart along the contact plane a point's two sides may slide
+// before it is stale, metres: a point found in this step has none (to
+// rounding); one kept from an earlier step has the two bodies' relative
+// slide since. 1 um keeps the resting points of bodies that creep.
+constexpr double kStaleDrift = 1e-6;
+
+// Removes the points that no longer mark where the bodies touch.
+void dropDriftedPoints(btPersistentManifold& manifold) {
+  for (int p = manifold.getNumContacts() - 1; p >= 0; --p) {
+    const btManifoldPoint& point = manifold.getContactPoint(p);
+    const btVector3 apart = point.getPositionWorldOnA() - point.getPositionWorldOnB();
+    const btVector3 slide = apart - point.m_normalWorldOnB * point.m_normalWorldOnB.dot(apart);
+    if (slide.length2() > kStaleDrift * kStaleDrift) manifold.removeContactPoint(p);
+  }
+}
+
 // Removes every point but the deepest (ties: the first).
 void keepDeepestPoint(btPersistentManifold& manifold) {
   int deepest = 0;
@@ -139,6 +171,8 @@ void DynamicsWorld::solveConstraints(btContactSolverInfo& solverInfo) {
     if (manifold->getNumContacts() > 1 &&
         (isSphere(manifold->getBody0()) || isSphere(manifold->getBody1()))) {
       keepDeepestPoint(*manifold);
+    } else if (isClippedBoxPair(*manifold)) {
+      dropDriftedPoints(*manifold);
     }
   }
   btDiscreteDynamicsWorld::solveConstraints(solverInfo);

@@ -37,7 +37,17 @@ struct AnalyticResult {
 ///  - projectile_off_the_edge: first touches the floor at
 ///    x = edge + v sqrt(2 h / g), h the fall of the centre;
 ///  - head_on_spheres: vA = (mA - e mB) v / (mA + mB),
-///    vB = (1 + e) mA v / (mA + mB), and where each stands at T.
+///    vB = (1 + e) mA v / (mA + mB), and where each stands at T;
+///  - cube_tips_off_the_edge (report 3.4): a cube gliding slowly without
+///    friction starts to tip when its centre passes the edge, and ends
+///    resting on the floor;
+///  - stack_rides_along, stack_rider_slips: a pushed cube carrying another;
+///    the rider slips back until both move as one, then rides along if the
+///    table slows the pair by less than mu g between them, else slips on
+///    (see stackTravel in the source for the distances);
+///  - straight_line_transfer (report 3.7): A pushed a step into B; B goes
+///    on for the rest of the step, and A moves the whole step by the rule
+///    (rules, compat) or stops where it met B (bullet, elastic cubes).
 class AnalyticCase {
  public:
   /// The case of `scenario`, or nothing if its name is not one.

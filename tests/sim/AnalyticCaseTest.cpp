@@ -23,13 +23,15 @@ struct Case {
   double dt;
 };
 
-Case run(const std::string& name, Integrator integrator = Integrator::Trapezoid) {
+Case run(const std::string& name, Integrator integrator = Integrator::Trapezoid, int iterations = 0,
+        SimulationMode mode = SimulationMode::Bullet) {
   Case c{ScenarioLoader::loadFile(std::string(TABLETOP_SOURCE_DIR) + "/scenarios/analytic/" + name + ".json"), {}, 0};
   const auto analytic = AnalyticCase::forScenario(c.scenario);
   EXPECT_TRUE(analytic.has_value()) << name;
   Settings settings = c.scenario.settings;
   settings.integrator = integrator;
-  c.result = analytic->run(c.scenario, settings, SimulationMode::Bullet);
+  if (iterations > 0) settings.iterations = iterations;
+  c.result = analytic->run(c.scenario, settings, mode);
   c.dt = c.scenario.settings.timestep;
   return c;
 }
@@ -129,6 +131,62 @@ TEST(AnalyticCase, CubeSlidesShortByTheEulerTermWithEuler) {
   const double v0 = 2.0;  // m/s
   const AnalyticMeasure& d = measure(c, "A distance slid");
   EXPECT_NEAR(d.truth - d.measured, 0.5 * v0 * c.dt, 1e-4);
+}
+
+// Report 3.4: the cube gliding at v = 0.05 m/s starts to tip where its
+// centre passes the edge, to one step's travel (v dt = 0.21 mm at 240 Hz;
+// measured 0.11 mm): the contacts a step uses are found at its start, so
+// the tipping starts in the first step that begins past the edge. It ends
+// on the floor on a face, its centre a/2 up to 0.1 mm.
+TEST(AnalyticCase, CubeTipsWhereItsCentrePassesTheEdge) {
+  const Case c = run("cube_tips_off_the_edge");
+  const double v = 0.05;  // m/s
+  EXPECT_LE(measure(c, "A centre x when it starts to tip").error(), v * c.dt);
+  EXPECT_LE(measure(c, "A height at rest on the floor").error(), 1e-4);
+}
+
+// The carried cube: both distances at the default 10 iterations to 1 mm
+// (measured: 0.64 mm on the rider, 0.13 mm on the base); what is left is
+// the solver's, not the step's: at 50 iterations both are within 0.02 mm
+// (measured 0.004 mm).
+TEST(AnalyticCase, StackedCubeRidesAlongAfterSlippingBack) {
+  const Case c = run("stack_rides_along");
+  EXPECT_LE(measure(c, "A distance slid").error(), 1e-3);
+  EXPECT_LE(measure(c, "B distance carried").error(), 1e-3);
+  const Case converged = run("stack_rides_along", Integrator::Trapezoid, 50);
+  EXPECT_LE(measure(converged, "A distance slid").error(), 2e-5);
+  EXPECT_LE(measure(converged, "B distance carried").error(), 2e-5);
+}
+
+// Past the threshold (the table grips A harder than A grips B), both
+// distances to 0.1 mm (measured 0.05 mm).
+TEST(AnalyticCase, StackedCubeSlipsOnPastTheThreshold) {
+  const Case c = run("stack_rider_slips");
+  EXPECT_LE(measure(c, "A distance slid").error(), 1e-4);
+  EXPECT_LE(measure(c, "B distance carried").error(), 1e-4);
+  // And the two cases differ where the closed form says they do: the rider
+  // ends behind its start on A in both, by 16.3 mm and by 13.9 mm.
+  const Case rides = run("stack_rides_along");
+  const auto lag = [](const Case& k) {
+    return measure(k, "B distance carried").truth - measure(k, "A distance slid").truth;
+  };
+  EXPECT_NEAR(lag(rides), -0.0163, 1e-4);
+  EXPECT_NEAR(lag(c), -0.0139, 1e-4);
+}
+
+// The straight-line transfer by the rules is exact (to 1 nm); compat, Bullet
+// held to the rules with Bullet finding the contact, agrees to 0.1 mm; full
+// physics sends B the same 0.3 m, to the travel of one step at the impact
+// speed v1 = sqrt(2 mu g 0.3 m) (6.4 mm at 240 Hz; measured 4.3 mm), as the
+// impact is resolved at a step boundary.
+TEST(AnalyticCase, StraightLineTransferInEveryMode) {
+  const Case rules = run("straight_line_transfer", Integrator::Trapezoid, 0, SimulationMode::Rules);
+  EXPECT_LE(rules.result.positionError, 1e-9);
+  const Case compat = run("straight_line_transfer", Integrator::Trapezoid, 0, SimulationMode::Compat);
+  EXPECT_LE(compat.result.positionError, 1e-4);
+  const Case bullet = run("straight_line_transfer");
+  const double v1 = std::sqrt(2.0 * 0.4 * bullet.scenario.settings.gravity * 0.3);
+  EXPECT_LE(bullet.result.positionError, v1 * bullet.dt);
 }
 
 }  // namespace
