@@ -21,6 +21,8 @@
 #include "scenario/ScenarioLoader.h"
 #include "sim/Benchmark.h"
 #include "sim/ResultFormat.h"
+#include "sim/SceneBuilder.h"
+#include "sim/ScriptRunner.h"
 
 namespace tabletop {
 namespace {
@@ -69,8 +71,8 @@ class Progress {
 
 std::string table(const std::vector<BenchPoint>& points, const std::string& scene, bool analytic) {
   std::ostringstream o;
-  o << scene << "  (error against " << (analytic ? "the closed form" : "a run at 4000 Hz, 50 iterations, trapezoid") << ")\n";
-  o << "  " << padded("rate [Hz]", 11) << padded("iterations", 12) << padded("integrator", 12)
+  o << scene << "  (error against " << (analytic ? "the closed form" : "full physics at 4000 Hz, 50 iterations, trapezoid") << ")\n";
+  o << "  " << padded("mode", 8) << padded("rate [Hz]", 11) << padded("iterations", 12) << padded("integrator", 12)
     << padded("cost [ms/s]", 13)
     << padded("spread", 9) << padded("error [mm]", 12) << "front\n";
   std::vector<BenchPoint> rows;
@@ -79,7 +81,7 @@ std::string table(const std::vector<BenchPoint>& points, const std::string& scen
   }
   std::sort(rows.begin(), rows.end(), [](const BenchPoint& a, const BenchPoint& b) { return a.costMs < b.costMs; });
   for (const BenchPoint& p : rows) {
-    o << "  " << padded(fixed(1.0 / p.timestep, 0), 11) << padded(std::to_string(p.iterations), 12)
+    o << "  " << padded(std::string(toString(p.mode)), 8) << padded(fixed(1.0 / p.timestep, 0), 11) << padded(std::to_string(p.iterations), 12)
       << padded(std::string(toString(p.integrator)), 12) << padded(fixed(p.costMs, 3), 13) << padded(fixed(100.0 * p.spread, 0) + "%", 9)
       << padded(p.complete ? fixed(1000.0 * p.error, 4) : std::string("diverged"), 12) << (p.front ? "*" : "")
       << "\n";
@@ -90,38 +92,47 @@ std::string table(const std::vector<BenchPoint>& points, const std::string& scen
 std::string csv(const std::vector<BenchPoint>& points) {
   std::ostringstream o;
   o << std::setprecision(9)
-    << "scene,rate_hz,timestep_s,iterations,integrator,cost_ms_per_s,spread,error_m,complete,front\n";
+    << "scene,mode,rate_hz,timestep_s,iterations,integrator,cost_ms_per_s,spread,error_m,complete,front\n";
   for (const BenchPoint& p : points) {
-    o << p.scene << "," << 1.0 / p.timestep << "," << p.timestep << "," << p.iterations << "," << toString(p.integrator)
+    o << p.scene << "," << toString(p.mode) << "," << 1.0 / p.timestep << "," << p.timestep << "," << p.iterations << "," << toString(p.integrator)
       << "," << p.costMs << ","
       << p.spread << "," << p.error << "," << p.complete << "," << p.front << "\n";
   }
   return o.str();
 }
 
+// The curve a point belongs to: in bullet mode its integrator and
+// iterations, otherwise its mode alone.
+std::string family(const BenchPoint& p) {
+  if (p.mode != SimulationMode::Bullet) return std::string(toString(p.mode));
+  return std::string(toString(p.integrator)) + ", " + std::to_string(p.iterations) + " iterations";
+}
+
 // error [mm] against cost [ms per simulated second], log-log, one curve
-// per iteration count, the front circled.
-std::string plotScript(const std::vector<BenchPoint>& points, const std::string& scene, const std::vector<int>& its,
-                       const std::vector<Integrator>& integrators) {
+// per family, the front circled.
+std::string plotScript(const std::vector<BenchPoint>& points, const std::string& scene) {
   std::ostringstream g;
   g << std::setprecision(9);
   g << "set title " << gnuplotQuoted(scene + ": error against cost (Bullet, double)") << " noenhanced\n";
   g << "set logscale xy\nset grid\nset key top right\n";
   g << "set xlabel 'wall time per simulated second [ms]'\nset ylabel 'error [mm]'\n";
-  std::vector<std::string> curves;
-  for (Integrator integrator : integrators) {
-    for (int it : its) {
-      const std::string block = "$" + std::string(toString(integrator)) + std::to_string(it);
-      g << block << " << EOD\n";
-      for (const BenchPoint& p : points) {
-        if (p.scene == scene && p.iterations == it && p.integrator == integrator && p.complete) {
-          g << p.costMs << " " << std::max(1e-6, 1000.0 * p.error) << " " << 1.0 / p.timestep << "\n";
-        }
-      }
-      g << "EOD\n";
-      curves.push_back(block + " using 1:2 with linespoints title '" + std::string(toString(integrator)) + ", " +
-                       std::to_string(it) + " iterations'");
+  std::vector<std::string> families;
+  for (const BenchPoint& p : points) {
+    if (p.scene == scene && std::find(families.begin(), families.end(), family(p)) == families.end()) {
+      families.push_back(family(p));
     }
+  }
+  std::vector<std::string> curves;
+  for (std::size_t f = 0; f < families.size(); ++f) {
+    const std::string block = "$family" + std::to_string(f);
+    g << block << " << EOD\n";
+    for (const BenchPoint& p : points) {
+      if (p.scene == scene && family(p) == families[f] && p.complete) {
+        g << p.costMs << " " << std::max(1e-6, 1000.0 * p.error) << " " << 1.0 / p.timestep << "\n";
+      }
+    }
+    g << "EOD\n";
+    curves.push_back(block + " using 1:2 with linespoints title " + gnuplotQuoted(families[f]));
   }
   g << "$front << EOD\n";
   for (const BenchPoint& p : points) {
@@ -157,7 +168,53 @@ void addBenchOptions(CLI::App& command, BenchOptions& options) {
   command.add_option("--integrators", options.integrators, "Integrators to sweep (default euler,trapezoid)")
       ->delimiter(',')
       ->transform(CLI::CheckedTransformer(integrators));
+  std::map<std::string, SimulationMode> modes;
+  for (SimulationMode m : kAllModes) modes.emplace(std::string(toString(m)), m);
+  command.add_option("--modes", options.modes,
+                     "Modes to sweep (default bullet,compat,rules; compat and rules at the scene's own iterations)")
+      ->delimiter(',')
+      ->transform(CLI::CheckedTransformer(modes));
 }
+
+namespace {
+
+// The settings to sweep for `scene` in `mode`: the whole grid in bullet
+// mode; the rates alone in compat and rules, whose rules do not iterate.
+std::vector<Settings> sweep(const BenchOptions& options, const Scenario& scene, SimulationMode mode) {
+  std::vector<Settings> out;
+  for (double rate : options.rates) {
+    Settings s = scene.settings;
+    s.timestep = 1.0 / rate;
+    if (mode != SimulationMode::Bullet) {
+      out.push_back(s);
+      continue;
+    }
+    for (int it : options.iterations) {
+      for (Integrator integrator : options.integrators) {
+        s.iterations = it;
+        s.integrator = integrator;
+        out.push_back(s);
+      }
+    }
+  }
+  return out;
+}
+
+// Whether `scene` runs in `mode` (compat and rules move entities by steps
+// only): the reason it does not, or nothing.
+std::optional<std::string> refusal(const Scenario& scene, SimulationMode mode) {
+  try {
+    Settings quick = scene.settings;
+    quick.duration = quick.timestep;
+    auto simulation = buildSimulation(scene, quick, mode);
+    runScript(scene, quick, *simulation);
+  } catch (const ScenarioError& e) {
+    return e.lines().empty() ? std::string("refused") : e.lines().front();
+  }
+  return std::nullopt;
+}
+
+}  // namespace
 
 int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) {
   std::vector<BenchScene> scenes;
@@ -190,34 +247,39 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
 
   const InterruptGuard interrupt;
   std::vector<BenchPoint> points;
+  std::map<std::string, std::vector<std::string>> skipped;  // per scene, a line per mode it cannot run in
   {
-    Progress progress(err, static_cast<long>(scenes.size() * options.rates.size() * options.iterations.size() *
-                                             options.integrators.size()));
+    std::vector<std::pair<BenchScene*, SimulationMode>> jobs;
+    long total = 0;
     for (BenchScene& scene : scenes) {
-      for (double rate : options.rates) {
-        for (int it : options.iterations) {
-          for (Integrator integrator : options.integrators) {
-            if (interrupt.requested()) break;
-            Settings settings = scene.scenario().settings;
-            settings.timestep = 1.0 / rate;
-            settings.iterations = it;
-            settings.integrator = integrator;
-            BenchPoint p{scene.name(), settings.timestep, it, integrator};
-            scene.run(settings);  // warm-up (and the reference run, once)
-            std::vector<double> costs;
-            for (int r = 0; r < options.repeats; ++r) {
-              const BenchScene::Run run = scene.run(settings);
-              costs.push_back(1000.0 * run.wallSeconds / std::max(run.simSeconds, settings.timestep));
-              p.error = run.error;
-              p.complete = p.complete && run.complete;
-            }
-            p.costMs = median(costs);
-            p.spread = (*std::max_element(costs.begin(), costs.end()) - *std::min_element(costs.begin(), costs.end())) /
-                       p.costMs;
-            points.push_back(p);
-            progress.advance(scene.name() + " " + fixed(rate, 0) + " Hz");
-          }
+      for (SimulationMode mode : options.modes) {
+        if (const auto why = refusal(scene.scenario(), mode)) {
+          skipped[scene.name()].push_back("not in mode " + std::string(toString(mode)) + ": " + *why);
+          continue;
         }
+        jobs.emplace_back(&scene, mode);
+        total += static_cast<long>(sweep(options, scene.scenario(), mode).size());
+      }
+    }
+    Progress progress(err, total);
+    for (const auto& [scene, mode] : jobs) {
+      for (const Settings& settings : sweep(options, scene->scenario(), mode)) {
+        if (interrupt.requested()) break;
+        BenchPoint p{scene->name(), settings.timestep, settings.iterations, settings.integrator, mode};
+        scene->run(settings, mode);  // warm-up (and the reference run, once)
+        std::vector<double> costs;
+        for (int r = 0; r < options.repeats; ++r) {
+          const BenchScene::Run run = scene->run(settings, mode);
+          costs.push_back(1000.0 * run.wallSeconds / std::max(run.simSeconds, settings.timestep));
+          p.error = run.error;
+          p.complete = p.complete && run.complete;
+        }
+        p.costMs = median(costs);
+        p.spread = (*std::max_element(costs.begin(), costs.end()) - *std::min_element(costs.begin(), costs.end())) /
+                   p.costMs;
+        points.push_back(p);
+        progress.advance(scene->name() + " " + std::string(toString(mode)) + " " + fixed(1.0 / settings.timestep, 0) +
+                         " Hz");
       }
     }
   }
@@ -226,7 +288,7 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
   if (options.json) {
     nlohmann::json all = nlohmann::json::array();
     for (const BenchPoint& p : points) {
-      all.push_back({{"scene", p.scene}, {"timestep", p.timestep}, {"iterations", p.iterations},
+      all.push_back({{"scene", p.scene}, {"mode", toString(p.mode)}, {"timestep", p.timestep}, {"iterations", p.iterations},
                      {"integrator", toString(p.integrator)},
                      {"cost_ms_per_s", p.costMs}, {"spread", p.spread}, {"error_m", p.error},
                      {"complete", p.complete}, {"front", p.front}});
@@ -235,6 +297,7 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
   } else {
     for (std::size_t i = 0; i < scenes.size(); ++i) {
       out << (i ? "\n" : "") << table(points, scenes[i].name(), scenes[i].analytic());
+      for (const std::string& line : skipped[scenes[i].name()]) out << "  (" << line << ")\n";
     }
   }
   int status = kExitOk;
@@ -243,7 +306,7 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
     std::string problem = AtomicFile::write((dir / "bench.csv").string(), csv(points));
     for (std::size_t i = 0; problem.empty() && i < scenes.size(); ++i) {
       problem = writeGnuplotFile((dir / ("bench_" + scenes[i].name() + ".png")).string(),
-                                 plotScript(points, scenes[i].name(), options.iterations, options.integrators), 900, 640);
+                                 plotScript(points, scenes[i].name()), 900, 640);
     }
     if (!problem.empty()) {
       err << "tabletop bench: " << problem << "\n";

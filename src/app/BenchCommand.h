@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/Integrator.h"
+#include "core/SimulationMode.h"
 
 namespace CLI {
 class App;
@@ -24,6 +25,9 @@ struct BenchOptions {
   std::vector<double> rates{30, 60, 120, 240, 480, 1000, 2000, 4000};  ///< Hz
   std::vector<int> iterations{4, 10, 20, 50};
   std::vector<Integrator> integrators{Integrator::Euler, Integrator::Trapezoid};
+  /// --modes: bullet sweeps the whole grid; compat and rules, the cheap
+  /// end, sweep the rates at the scene's own iterations and integrator.
+  std::vector<SimulationMode> modes{SimulationMode::Bullet, SimulationMode::Compat, SimulationMode::Rules};
 };
 
 /// Declares bench's options on `command`.

@@ -49,6 +49,7 @@ struct BenchPoint {
   double timestep = 0.0;  ///< s
   int iterations = 0;
   Integrator integrator = Integrator::Trapezoid;
+  SimulationMode mode = SimulationMode::Bullet;
   double costMs = 0.0;    ///< median wall milliseconds per simulated second
   double spread = 0.0;    ///< (slowest - fastest) / median of the repeats
   double error = 0.0;     ///< m

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -355,6 +356,24 @@ TEST(CommandLine, BenchPrintsTheTableAndWritesCsvAndPlot) {
   EXPECT_EQ(lineCount(o.err), 1) << o.err;
   o = run(kBin + "tabletop bench --rates 5");
   EXPECT_EQ(o.status, 2);
+}
+
+// The modes are families of the sweep: compat and rules at the rates
+// alone, and a scene they cannot run (a push by impulse) says so and is
+// measured in bullet mode only.
+TEST(CommandLine, BenchSweepsTheModes) {
+  Outcome o = run(kBin + "tabletop bench --scenarios " + kScenarios +
+                  " --cases straight_line_transfer --repeats 1 --rates 60,240 --iterations 4,10 --json");
+  ASSERT_EQ(o.status, 0) << o.err;
+  std::map<std::string, int> perMode;
+  for (const auto& p : nlohmann::json::parse(o.out)) ++perMode[p["mode"].get<std::string>()];
+  EXPECT_EQ(perMode["bullet"], 2 * 2 * 2);
+  EXPECT_EQ(perMode["compat"], 2);
+  EXPECT_EQ(perMode["rules"], 2);
+  o = run(kBin + "tabletop bench --scenarios " + kScenarios + " --cases free_flight --repeats 1 --rates 60 --iterations 4");
+  ASSERT_EQ(o.status, 0) << o.err;
+  EXPECT_NE(o.out.find("(not in mode compat: "), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("(not in mode rules: "), std::string::npos) << o.out;
 }
 
 // Every mode prints the same JSON keys for each entity.
