@@ -23,6 +23,7 @@
 #include "sim/ResultFormat.h"
 #include "sim/SceneBuilder.h"
 #include "sim/ScriptRunner.h"
+#include "sim/ToleranceFront.h"
 
 namespace tabletop {
 namespace {
@@ -154,6 +155,9 @@ void addBenchOptions(CLI::App& command, BenchOptions& options) {
   command.add_option("--scenarios", options.scenarioDir, "Where the default scenes are (default: scenarios)");
   command.add_option("--cases", options.cases, "Only scenes whose name contains PATTERN");
   command.add_option("--out", options.outDir, "Write DIR/bench.csv and DIR/bench_SCENE.png (log-log plots)");
+  command.add_option("--front", options.frontFile,
+                     "Write the analytic cases' full-physics fronts to FILE, for run --tolerance "
+                     "(the shipped one is scenarios/front.json)");
   command.add_flag("--json", options.json, "Print the measurements as JSON instead of tables");
   command.add_option("--repeats", options.repeats, "Timed runs per setting, after a warm-up (default 5)")
       ->check(CLI::Range(1, 1000));
@@ -301,6 +305,13 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
     }
   }
   int status = kExitOk;
+  if (options.frontFile && !interrupt.requested()) {
+    if (const std::string problem = AtomicFile::write(*options.frontFile, ToleranceFront::fromBench(points).toJson());
+        !problem.empty()) {
+      err << "tabletop bench: --front: " << problem << "\n";
+      status = kExitFailure;
+    }
+  }
   if (options.outDir) {
     const std::filesystem::path dir(*options.outDir);
     std::string problem = AtomicFile::write((dir / "bench.csv").string(), csv(points));

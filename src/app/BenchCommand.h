@@ -20,6 +20,7 @@ struct BenchOptions {
   std::string scenarioDir = "scenarios";  ///< --scenarios: where the default scenes are
   std::optional<std::string> cases;    ///< --cases: only scenes whose name contains this
   std::optional<std::string> outDir;   ///< --out: CSV and plots
+  std::optional<std::string> frontFile;  ///< --front: the analytic cases' fronts, for run --tolerance
   bool json = false;
   int repeats = 5;                     ///< timed runs per setting, after one warm-up
   std::vector<double> rates{30, 60, 120, 240, 480, 1000, 2000, 4000};  ///< Hz

@@ -13,6 +13,7 @@
 #include "sim/ResultFormat.h"
 #include "sim/SceneBuilder.h"
 #include "sim/ScriptRunner.h"
+#include "sim/ToleranceFront.h"
 #include "sim/TraceWriter.h"
 
 namespace tabletop {
@@ -36,14 +37,35 @@ void addRunOptions(CLI::App& command, RunOptions& options, bool withMode) {
                      "How positions follow velocities: trapezoid (second order, the default) or euler "
                      "(Bullet's own); overrides the scenario")
       ->transform(CLI::CheckedTransformer(integrators));
+  command.add_option("--tolerance", options.tolerance,
+                     "Error in metres to meet: picks the cheapest timestep, iterations and integrator the bench's "
+                     "front says meet it for the scene's kinds of motion, and says why (overrides the scenario; "
+                     "--timestep, --iterations and --integrator override it)")
+      ->check(CLI::PositiveNumber & CLI::Range(1e-9, 1.0));
+  command.add_option("--front", options.frontFile,
+                     "The front --tolerance reads (default scenarios/front.json; made by tabletop bench --front)");
   command.add_option("--duration", options.duration, "Longest simulated time in seconds (overrides the scenario)")
       ->check(CLI::PositiveNumber & CLI::Range(0.0, 3600.0));
 }
 
-Scenario loadScenario(const ScenarioSource& source, const RunOptions& options, Settings& settings) {
+Scenario loadScenario(const ScenarioSource& source, const RunOptions& options, Settings& settings,
+                      std::vector<std::string>* choiceLines) {
   Scenario scenario = source.text ? ScenarioLoader::loadText(*source.text, source.name)
                                   : ScenarioLoader::loadFile(source.name);
   settings = scenario.settings;
+  if (options.tolerance) {
+    const ToleranceChoice choice = ToleranceFront::load(options.frontFile).choose(scenario, *options.tolerance);
+    settings = choice.settings;
+    if (choiceLines) {
+      std::ostringstream head;
+      head << scenario.name << ": for an error of at most " << *options.tolerance << " m, "
+           << (choice.met ? "chose " : "could not meet it everywhere; chose ") << 1.0 / settings.timestep << " Hz ("
+           << settings.timestep << " s), " << settings.iterations << " iterations, " << toString(settings.integrator)
+           << "; by kind of motion, the cheapest measured settings within it:";
+      choiceLines->push_back(head.str());
+      for (const std::string& r : choice.reasons) choiceLines->push_back("  " + r);
+    }
+  }
   if (options.timestep) settings.timestep = *options.timestep;
   if (options.iterations) settings.iterations = *options.iterations;
   if (options.integrator) settings.integrator = *options.integrator;
@@ -59,12 +81,13 @@ int runScenarios(const RunOptions& options, std::ostream& out, std::ostream& err
     return kExitBadInput;
   }
   std::vector<RunResult> results;
+  std::vector<std::string> choices;
   bool failed = false;
   std::optional<TraceWriter> trace;
   for (const ScenarioSource& source : options.scenarios) {
     try {
       Settings settings;
-      const Scenario scenario = loadScenario(source, options, settings);
+      const Scenario scenario = loadScenario(source, options, settings, &choices);
       std::unique_ptr<Simulation> simulation = buildSimulation(scenario, settings, options.mode);
       StepObserver observer;
       if (options.traceFile) {
@@ -99,7 +122,11 @@ int runScenarios(const RunOptions& options, std::ostream& out, std::ostream& err
     }
   }
 
+  // What --tolerance chose goes with the text; beside JSON, to the error
+  // stream, so the JSON stays one document.
   std::ostringstream text;
+  for (const std::string& line : choices) (options.json ? err : text) << line << "\n";
+  if (!choices.empty() && !options.json) text << "\n";
   if (options.json) {
     if (results.size() == 1) {
       text << toJson(results.front()).dump(2) << "\n";

@@ -41,6 +41,8 @@ struct RunOptions {
   std::optional<double> duration;
   std::optional<std::string> outFile;  ///< write the output here, whole or not at all
   std::optional<std::string> traceFile;  ///< write every step's motions here (CSV), for one scenario
+  std::optional<double> tolerance;       ///< m: pick the cheapest settings the front says meet it
+  std::string frontFile = "scenarios/front.json";  ///< where --tolerance reads the front
 };
 
 /// Declares run's options (all but the scenario list) on `command`; with
@@ -48,8 +50,11 @@ struct RunOptions {
 void addRunOptions(CLI::App& command, RunOptions& options, bool withMode = true);
 
 /// Reads a scenario and applies the command line's overrides to its
-/// settings. Throws ScenarioError.
-Scenario loadScenario(const ScenarioSource& source, const RunOptions& options, Settings& settings);
+/// settings: first --tolerance (what it chose and why, a line each, goes
+/// to `choiceLines` if given), then --timestep, --iterations, --integrator
+/// and --duration. Throws ScenarioError, also for a bad front file.
+Scenario loadScenario(const ScenarioSource& source, const RunOptions& options, Settings& settings,
+                      std::vector<std::string>* choiceLines = nullptr);
 
 /// Runs every scenario, then prints all outcomes to `out` (text, or JSON: an
 /// object for one scenario, an array for several). Problems go to `err`,

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <stdexcept>
 
 #include "physics/ContactMaterial.h"
@@ -102,6 +103,21 @@ std::optional<AnalyticCase> AnalyticCase::forScenario(const Scenario& scenario) 
 }
 
 std::vector<std::string> AnalyticCase::names() { return {std::begin(kNames), std::end(kNames)}; }
+
+std::string AnalyticCase::motion(const std::string& name) {
+  static const std::map<std::string, std::string> kMotions = {
+      {"free_flight", "flight"},
+      {"projectile_off_the_edge", "leaving the table"},
+      {"cube_tips_off_the_edge", "leaving the table"},
+      {"cube_slides_to_rest", "sliding"},
+      {"sphere_slip_to_roll", "rolling"},
+      {"head_on_spheres", "collision"},
+      {"straight_line_transfer", "collision"},
+      {"stack_rides_along", "stacking"},
+      {"stack_rider_slips", "stacking"}};
+  const auto it = kMotions.find(name);
+  return it == kMotions.end() ? std::string() : it->second;
+}
 
 AnalyticResult AnalyticCase::run(const Scenario& s, const Settings& settings, SimulationMode mode) const {
   const double g = settings.gravity;

@@ -54,6 +54,9 @@ class AnalyticCase {
   static std::optional<AnalyticCase> forScenario(const Scenario& scenario);
   /// Every case's name.
   static std::vector<std::string> names();
+  /// The kind of motion the case named `name` stands for (see motionsOf in
+  /// ToleranceFront.h), or "" for an unknown name.
+  static std::string motion(const std::string& name);
 
   const std::string& name() const { return name_; }
   /// Runs the scenario in `mode` with `settings` and compares.

@@ -358,6 +358,27 @@ TEST(CommandLine, BenchPrintsTheTableAndWritesCsvAndPlot) {
   EXPECT_EQ(o.status, 2);
 }
 
+// run --tolerance says what it chose and why, and runs with it; with
+// --json the choice goes to standard error and the settings into the JSON.
+// A front file that cannot be read is one line and status 2.
+TEST(CommandLine, RunToleranceChoosesAndSaysWhy) {
+  const std::string front = " --front " + kScenarios + "front.json";
+  Outcome o = run(kBin + "tabletop run " + kScenarios + "analytic/cube_slides_to_rest.json --tolerance 1e-3" + front);
+  ASSERT_EQ(o.status, 0) << o.err;
+  EXPECT_NE(o.out.find("cube_slides_to_rest: for an error of at most 0.001 m, chose "), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("  sliding (cube_slides_to_rest): "), std::string::npos) << o.out;
+  o = run(kBin + "tabletop run " + kScenarios + "analytic/cube_slides_to_rest.json --json --tolerance 1e-3" + front);
+  ASSERT_EQ(o.status, 0) << o.err;
+  EXPECT_NE(o.err.find("for an error of at most 0.001 m"), std::string::npos) << o.err;
+  const auto j = nlohmann::json::parse(o.out);
+  EXPECT_GT(j["settings"]["timestep"].get<double>(), 0.0);
+  o = run(kBin + "tabletop run " + kScenarios + "analytic/cube_slides_to_rest.json --tolerance 1e-3 --front " +
+          kScenarios + "no_such_front.json");
+  EXPECT_EQ(o.status, 2);
+  EXPECT_EQ(lineCount(o.err), 1) << o.err;
+  EXPECT_NE(o.err.find("no_such_front.json"), std::string::npos) << o.err;
+}
+
 // The modes are families of the sweep: compat and rules at the rates
 // alone, and a scene they cannot run (a push by impulse) says so and is
 // measured in bullet mode only.
