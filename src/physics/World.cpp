@@ -326,6 +326,14 @@ void World::observe(bool emit) {
     const btPersistentManifold* manifold = dispatcher_->getManifoldByIndexInternal(m);
     const int a = manifold->getBody0()->getUserIndex();
     const int b = manifold->getBody1()->getUserIndex();
+    // A manifold left without points, its drifted ones dropped as two
+    // boxes part while sliding (DynamicsWorld), holds a pair Bullet still
+    // sees as near: it counts as at the parting distance, so a pair that
+    // was touching stays so and one that was not does not begin.
+    if (manifold->getNumContacts() == 0) {
+      if (a >= 0) contacts_.push_back({a, b, kApartDistance, -1.0});
+      if (b >= 0) contacts_.push_back({b, a, kApartDistance, -1.0});
+    }
     for (int p = 0; p < manifold->getNumContacts(); ++p) {
       const btManifoldPoint& point = manifold->getContactPoint(p);
       const double distance = point.getDistance();
