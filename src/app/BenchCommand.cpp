@@ -157,7 +157,7 @@ void addBenchOptions(CLI::App& command, BenchOptions& options) {
   command.add_option("--out", options.outDir, "Write DIR/bench.csv and DIR/bench_SCENE.png (log-log plots)");
   command.add_option("--front", options.frontFile,
                      "Write the analytic cases' full-physics fronts to FILE, for run --tolerance "
-                     "(the shipped one is scenarios/front.json)");
+                     "(the shipped one is data/tolerance_front.json)");
   command.add_flag("--json", options.json, "Print the measurements as JSON instead of tables");
   command.add_option("--repeats", options.repeats, "Timed runs per setting, after a warm-up (default 5)")
       ->check(CLI::Range(1, 1000));

@@ -43,7 +43,7 @@ void addRunOptions(CLI::App& command, RunOptions& options, bool withMode) {
                      "--timestep, --iterations and --integrator override it)")
       ->check(CLI::PositiveNumber & CLI::Range(1e-9, 1.0));
   command.add_option("--front", options.frontFile,
-                     "The front --tolerance reads (default scenarios/front.json; made by tabletop bench --front)");
+                     "The front --tolerance reads (default data/tolerance_front.json; made by tabletop bench --front)");
   command.add_option("--duration", options.duration, "Longest simulated time in seconds (overrides the scenario)")
       ->check(CLI::PositiveNumber & CLI::Range(0.0, 3600.0));
 }

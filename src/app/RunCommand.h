@@ -42,7 +42,7 @@ struct RunOptions {
   std::optional<std::string> outFile;  ///< write the output here, whole or not at all
   std::optional<std::string> traceFile;  ///< write every step's motions here (CSV), for one scenario
   std::optional<double> tolerance;       ///< m: pick the cheapest settings the front says meet it
-  std::string frontFile = "scenarios/front.json";  ///< where --tolerance reads the front
+  std::string frontFile = "data/tolerance_front.json";  ///< where --tolerance reads the front
 };
 
 /// Declares run's options (all but the scenario list) on `command`; with

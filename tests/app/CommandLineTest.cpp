@@ -31,6 +31,7 @@ struct Outcome {
 
 const std::string kBin = std::string(TABLETOP_BINARY_DIR) + "/src/app/";
 const std::string kScenarios = std::string(TABLETOP_SOURCE_DIR) + "/scenarios/";
+const std::string kData = std::string(TABLETOP_SOURCE_DIR) + "/data/";
 
 // Runs a shell command, capturing stdout, and stderr through a file.
 Outcome run(const std::string& command) {
@@ -362,7 +363,7 @@ TEST(CommandLine, BenchPrintsTheTableAndWritesCsvAndPlot) {
 // --json the choice goes to standard error and the settings into the JSON.
 // A front file that cannot be read is one line and status 2.
 TEST(CommandLine, RunToleranceChoosesAndSaysWhy) {
-  const std::string front = " --front " + kScenarios + "front.json";
+  const std::string front = " --front " + kData + "tolerance_front.json";
   Outcome o = run(kBin + "tabletop run " + kScenarios + "analytic/cube_slides_to_rest.json --tolerance 1e-3" + front);
   ASSERT_EQ(o.status, 0) << o.err;
   EXPECT_NE(o.out.find("cube_slides_to_rest: for an error of at most 0.001 m, chose "), std::string::npos) << o.out;

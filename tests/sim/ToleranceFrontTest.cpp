@@ -19,6 +19,7 @@ namespace tabletop {
 namespace {
 
 const std::string kScenarios = std::string(TABLETOP_SOURCE_DIR) + "/scenarios/";
+const std::string kData = std::string(TABLETOP_SOURCE_DIR) + "/data/";
 
 BenchPoint point(const char* scene, double rate, int iterations, double cost, double error) {
   BenchPoint p;
@@ -85,12 +86,12 @@ TEST(ToleranceFront, ABadFrontFileIsOneLineNamingFileAndPlace) {
 // The shipped front holds every analytic case, and each of its errors is
 // what the physics gives at that setting today (the double build is
 // deterministic), to 1 nm: when the physics changes, regenerate it with
-// `tabletop bench --modes bullet --front scenarios/front.json`.
+// `tabletop bench --modes bullet --front data/tolerance_front.json`.
 TEST(ToleranceFront, TheShippedFrontMatchesThePhysics) {
 #ifndef BT_USE_DOUBLE_PRECISION
   GTEST_SKIP() << "the shipped front is measured with the double-precision build";
 #endif
-  const ToleranceFront front = ToleranceFront::load(kScenarios + "front.json");
+  const ToleranceFront front = ToleranceFront::load(kData + "tolerance_front.json");
   for (const std::string& name : AnalyticCase::names()) {
     ASSERT_TRUE(front.cases().count(name)) << name;
     const Scenario s = ScenarioLoader::loadFile(kScenarios + "analytic/" + name + ".json");
