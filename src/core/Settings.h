@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/Broadphase.h"
 #include "core/Integrator.h"
 
 namespace tabletop {
@@ -22,6 +23,16 @@ struct Settings {
   bool endAtRest = true;          ///< stop once the script is done and all is at rest
   bool sleeping = false;          ///< let Bullet deactivate bodies at rest
   Integrator integrator = Integrator::Trapezoid;  ///< how positions follow velocities
+
+  // What the collision world models (full physics; README, "Modelling
+  // only what a scene needs", has what each saves and costs).
+  Broadphase broadphase = Broadphase::Dbvt;  ///< how overlapping pairs are found
+  /// The table's legs join the collision world only once a body can reach
+  /// them (its bounding box comes down to the underside of the top).
+  bool legsWhenReachable = false;
+  /// The floor pairs only with bodies whose bounding box comes down to it
+  /// (a half-space's bound), not with every body (an infinite plane's).
+  bool floorPairsNearFloor = false;
 };
 
 }  // namespace tabletop

@@ -8,10 +8,12 @@
 
 namespace tabletop {
 
-/// The floor the table stands on: the static plane y = 0.
+/// The floor the table stands on: the static plane y = 0. `bounded` gives
+/// it the bounding box of the half-space y <= 0 (Settings::
+/// floorPairsNearFloor) instead of Bullet's infinite one.
 class Ground {
  public:
-  explicit Ground(const Material& material = kNeutralMaterial);
+  explicit Ground(const Material& material = kNeutralMaterial, bool bounded = false);
   ~Ground();
   Ground(const Ground&) = delete;
   Ground& operator=(const Ground&) = delete;

@@ -16,9 +16,13 @@ namespace tabletop {
 /// The report's Table: a static entity made of a SolidBox top on four
 /// Cylinder legs, as one static btRigidBody with a btCompoundShape. Its top
 /// edges are the report's critical boundary (report 3.4).
+///
+/// With `separateLegs`, the compound holds the top alone and the legs are
+/// a second static compound, legsBody(), which the World adds only once a
+/// body can reach them (Settings::legsWhenReachable).
 class Table {
  public:
-  explicit Table(const TableSpec& spec);
+  explicit Table(const TableSpec& spec, bool separateLegs = false);
   ~Table();
   Table(const Table&) = delete;
   Table& operator=(const Table&) = delete;
@@ -47,13 +51,21 @@ class Table {
 
   btRigidBody& body() { return *body_; }
   const btRigidBody& body() const { return *body_; }
+  /// The legs' own static body, when they are separate; null otherwise.
+  btRigidBody* legsBody() { return legsBody_.get(); }
+  /// Height of the top's underside, the highest point of the legs.
+  double undersideHeight() const { return spec_.height - spec_.thickness; }
 
  private:
+  std::unique_ptr<btRigidBody> makeStaticBody(btCompoundShape& shape) const;
+
   TableSpec spec_;
   std::unique_ptr<SolidBox> top_;
   std::array<std::unique_ptr<Cylinder>, 4> legs_;
   std::unique_ptr<btCompoundShape> compound_;
   std::unique_ptr<btRigidBody> body_;
+  std::unique_ptr<btCompoundShape> legsCompound_;
+  std::unique_ptr<btRigidBody> legsBody_;
 };
 
 }  // namespace tabletop

@@ -34,18 +34,38 @@ btQuaternion yawRotation(double degrees) {
   return btQuaternion(btVector3(0, 1, 0), convertAngle(degrees));
 }
 
+// Room the sweep-and-prune broadphase makes: bodies beyond it are still
+// paired correctly, only less finely.
+constexpr int kSweepHandles = 1 << 16;
+
+std::unique_ptr<btBroadphaseInterface> makeBroadphase(Broadphase kind, const TableSpec& table) {
+  switch (kind) {
+    case Broadphase::Dbvt: break;
+    case Broadphase::SweepAndPrune: {
+      // Quantised over the table and well around it: the space the bodies
+      // of a scene move in.
+      const double reach = 10.0 + std::max(table.width, table.depth);
+      const btVector3 low(table.centreX - reach, -reach, table.centreZ - reach);
+      const btVector3 high(table.centreX + reach, table.height + reach, table.centreZ + reach);
+      return std::make_unique<bt32BitAxisSweep3>(low, high, kSweepHandles);
+    }
+    case Broadphase::Simple: return std::make_unique<btSimpleBroadphase>(kSweepHandles);
+  }
+  return std::make_unique<btDbvtBroadphase>();
+}
+
 }  // namespace
 
 World::World(const Settings& settings, const TableSpec& table, const Material& ground)
     : settings_(settings),
       configuration_(std::make_unique<btDefaultCollisionConfiguration>()),
       dispatcher_(std::make_unique<btCollisionDispatcher>(configuration_.get())),
-      broadphase_(std::make_unique<btDbvtBroadphase>()),
+      broadphase_(makeBroadphase(settings.broadphase, table)),
       solver_(std::make_unique<btSequentialImpulseConstraintSolver>()),
       world_(std::make_unique<DynamicsWorld>(dispatcher_.get(), broadphase_.get(),
                                                        solver_.get(), configuration_.get())),
-      table_(table),
-      ground_(ground) {
+      table_(table, settings.legsWhenReachable),
+      ground_(ground, settings.floorPairsNearFloor) {
   // A box resting on the ground plane gets all its corner contacts in the
   // first step, not one more per step (which let it sink for a step).
   configuration_->setPlaneConvexMultipointIterations();
@@ -91,12 +111,39 @@ World::World(const Settings& settings, const TableSpec& table, const Material& g
   ground_.body().setUserIndex(kGroundIndex);
   world_->addRigidBody(&table_.body());
   world_->addRigidBody(&ground_.body());
+  if (btRigidBody* legs = table_.legsBody()) {
+    legs->setUserPointer(const_cast<Material*>(&table_.spec().material));
+    legs->setUserIndex(kTableIndex);
+  }
 }
 
 World::~World() {
   for (auto& e : entities_) world_->removeRigidBody(e->body());
+  if (legsIn_) world_->removeRigidBody(table_.legsBody());
   world_->removeRigidBody(&ground_.body());
   world_->removeRigidBody(&table_.body());
+}
+
+// The legs stand under the top: a body reaches them only from below its
+// underside. They join the world, for good, before the first step in
+// which some body's box could come down that far: its lowest point, less
+// the distance it can fall in a step and Bullet's contact breaking
+// threshold, is below the underside.
+void World::addLegsIfReachable() {
+  if (legsIn_ || !table_.legsBody()) return;
+  const double underside = table_.undersideHeight();
+  const double dt = settings_.timestep;
+  for (const auto& e : entities_) {
+    const btRigidBody* body = e->body();
+    btVector3 low, high;
+    body->getCollisionShape()->getAabb(body->getWorldTransform(), low, high);
+    const double fall = (std::max(0.0, -body->getLinearVelocity().y()) + settings_.gravity * dt) * dt;
+    if (low.y() - fall - gContactBreakingThreshold < underside) {
+      world_->addRigidBody(table_.legsBody());
+      legsIn_ = true;
+      return;
+    }
+  }
 }
 
 Shape& World::addEntity(std::unique_ptr<Shape> shape, double mass, const Material& material,
@@ -108,9 +155,13 @@ Shape& World::addEntity(std::unique_ptr<Shape> shape, double mass, const Materia
   body->setUserPointer(const_cast<Material*>(&shape->material()));
   if (!settings_.sleeping) body->setActivationState(DISABLE_DEACTIVATION);
   world_->addRigidBody(body);
+  indexOf_.emplace(shape->name(), entities_.size());
   entities_.push_back(std::move(shape));
   trackers_.emplace_back();
-  updateSmoothAcceleration();
+  if (entities_.back()->material().friction > entityFriction_) {
+    entityFriction_ = entities_.back()->material().friction;
+    updateSmoothAcceleration();
+  }
   return *entities_.back();
 }
 
@@ -153,24 +204,22 @@ void World::makeDynamic(std::size_t i, const btVector3& velocity) {
 // g (1 + mu) with mu the largest friction any two of the scene's bodies
 // combine to, and a margin of half as much again for the solver's
 // rounding. A velocity change beyond it in one step is an impact.
+// entityFriction_ is the largest of the entities', kept as they are added
+// so that adding N entities costs O(N), not O(N^2).
 void World::updateSmoothAcceleration() {
   if (settings_.integrator != Integrator::Trapezoid) {
     world_->setSmoothAcceleration(0.0);
     return;
   }
-  double entityFriction = 0.0;
-  for (const auto& e : entities_) entityFriction = std::max(entityFriction, e->material().friction);
   const double otherFriction =
-      std::max({entityFriction, table_.spec().material.friction, ground_.material().friction});
-  const double mu = combine(Material{entityFriction}, Material{otherFriction}).friction;
+      std::max({entityFriction_, table_.spec().material.friction, ground_.material().friction});
+  const double mu = combine(Material{entityFriction_}, Material{otherFriction}).friction;
   world_->setSmoothAcceleration(1.5 * settings_.gravity * (1.0 + mu));
 }
 
 Shape* World::find(std::string_view name) {
-  for (auto& e : entities_) {
-    if (e->name() == name) return e.get();
-  }
-  return nullptr;
+  const auto it = indexOf_.find(std::string(name));
+  return it == indexOf_.end() ? nullptr : entities_[it->second].get();
 }
 
 Shape& World::entity(const std::string& name) {
@@ -190,6 +239,7 @@ std::string World::participantName(int i) const {
 }
 
 std::vector<std::pair<std::string, std::string>> World::overlaps(double tolerance) {
+  addLegsIfReachable();
   world_->performDiscreteCollisionDetection();
   std::vector<std::pair<std::string, std::string>> found;
   for (int m = 0; m < dispatcher_->getNumManifolds(); ++m) {
@@ -298,6 +348,7 @@ void World::start() {
 
 void World::step() {
   start();
+  addLegsIfReachable();
   // maxSubSteps = 0: exactly one step of the given length, no interpolation.
   world_->stepSimulation(settings_.timestep, 0);
   ++steps_;

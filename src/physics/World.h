@@ -4,6 +4,7 @@
 #include <set>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -44,6 +45,9 @@ class World : public Simulation {
 
   const Settings& settings() const { return settings_; }
   const Table& table() const { return table_; }
+  /// Whether the table's legs take part in collisions yet (always, unless
+  /// Settings::legsWhenReachable keeps them out until a body can reach them).
+  bool legsInWorld() const { return legsIn_ || !settings_.legsWhenReachable; }
   const std::vector<std::unique_ptr<Shape>>& entities() const { return entities_; }
   /// The entity called `name`, or null.
   Shape* find(std::string_view name);
@@ -95,6 +99,7 @@ class World : public Simulation {
   Shape& entity(const std::string& name);
   void start();
   void updateSmoothAcceleration();
+  void addLegsIfReachable();
   void observe(bool emit);
   void record(const Event& e);
   std::string participantName(const btCollisionObject* object) const;
@@ -117,13 +122,16 @@ class World : public Simulation {
   Table table_;
   Ground ground_;
   std::vector<std::unique_ptr<Shape>> entities_;
+  std::unordered_map<std::string, std::size_t> indexOf_;  // entity name -> index (the first of a name)
   std::vector<Tracker> trackers_;
   std::set<std::pair<int, int>> touching_;
   std::vector<Contact> contacts_;  // scratch, kept to avoid reallocating
   std::vector<Event> events_;
+  double entityFriction_ = 0.0;  // the largest friction coefficient of any entity
   double time_ = 0.0;
   long steps_ = 0;
   bool started_ = false;
+  bool legsIn_ = false;  // the table's separate legs are in the world
 };
 
 }  // namespace tabletop

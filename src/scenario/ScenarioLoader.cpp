@@ -255,6 +255,16 @@ Settings readSettings(const json& j, std::vector<Problem>& problems) {
       f.fail(f.at("integrator"), "expected \"euler\" or \"trapezoid\", got \"" + name + "\"");
     }
   }
+  if (f.has("broadphase")) {
+    const std::string name = f.string("broadphase", "");
+    if (const auto b = broadphaseFromString(name)) {
+      s.broadphase = *b;
+    } else if (!name.empty()) {
+      f.fail(f.at("broadphase"), "expected \"dbvt\", \"sap\" or \"simple\", got \"" + name + "\"");
+    }
+  }
+  s.legsWhenReachable = f.boolean("legs_when_reachable", s.legsWhenReachable);
+  s.floorPairsNearFloor = f.boolean("floor_pairs_near_floor", s.floorPairsNearFloor);
   f.finish();
   if (f.valid()) {
     const std::string tooLong = ScenarioLoader::stepCountProblem(s);

@@ -59,6 +59,7 @@ class ScriptPlayer {
   bool durationReached() const;
   bool waiting() const;
   void carryOut(const Action& action);
+  void applyPush(const Arrow& arrow, const PushMagnitude& magnitude);
 
   const Scenario& scenario_;
   Settings settings_;
