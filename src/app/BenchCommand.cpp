@@ -20,6 +20,8 @@
 #include "scenario/ScenarioError.h"
 #include "scenario/ScenarioLoader.h"
 #include "sim/Benchmark.h"
+#include "sim/CubeField.h"
+#include "sim/ModelSwitch.h"
 #include "sim/ResultFormat.h"
 #include "sim/SceneBuilder.h"
 #include "sim/ScriptRunner.h"
@@ -172,6 +174,13 @@ void addBenchOptions(CLI::App& command, BenchOptions& options) {
   command.add_option("--integrators", options.integrators, "Integrators to sweep (default euler,trapezoid)")
       ->delimiter(',')
       ->transform(CLI::CheckedTransformer(integrators));
+  command.add_flag("--sweep", options.sweep, "Sweep the settings (the default when no section is asked for)");
+  command.add_flag("--switches", options.switches,
+                   "Measure each model switch (sleeping, legs, floor pairs, broadphase) on every scene");
+  command.add_option("--scale", options.scale,
+                     "Time the cube field of these sizes with each model switch (e.g. 10,100,1000,10000)")
+      ->delimiter(',')
+      ->check(CLI::Range(1, 100000));
   std::map<std::string, SimulationMode> modes;
   for (SimulationMode m : kAllModes) modes.emplace(std::string(toString(m)), m);
   command.add_option("--modes", options.modes,
@@ -218,6 +227,160 @@ std::optional<std::string> refusal(const Scenario& scene, SimulationMode mode) {
   return std::nullopt;
 }
 
+// Runs `run` `repeats` times after a warm-up (when `warmUp`): the median
+// and spread of the wall milliseconds per simulated second, and the last
+// run.
+struct Timed {
+  double costMs = 0.0;
+  double spread = 0.0;
+  BenchScene::Run last;
+};
+
+template <class RunOnce>
+Timed timed(int repeats, bool warmUp, double timestep, RunOnce runOnce) {
+  Timed t;
+  if (warmUp) runOnce();
+  std::vector<double> costs;
+  bool complete = true;
+  for (int r = 0; r < repeats; ++r) {
+    t.last = runOnce();
+    complete = complete && t.last.complete;
+    costs.push_back(1000.0 * t.last.wallSeconds / std::max(t.last.simSeconds, timestep));
+  }
+  t.last.complete = complete;
+  t.costMs = median(costs);
+  t.spread = (*std::max_element(costs.begin(), costs.end()) - *std::min_element(costs.begin(), costs.end())) / t.costMs;
+  return t;
+}
+
+std::string signedPercent(double ratio) {
+  const double p = 100.0 * (ratio - 1.0);
+  return (p >= 0 ? "+" : "") + fixed(p, 0) + "%";
+}
+
+std::vector<SwitchPoint> measureSwitches(std::vector<BenchScene>& scenes, int repeats, const InterruptGuard& interrupt,
+                                         std::ostream& err) {
+  std::vector<SwitchPoint> points;
+  long total = 0;
+  for (const BenchScene& scene : scenes) total += static_cast<long>(modelSwitches(scene.scenario().settings).size());
+  Progress progress(err, total);
+  for (BenchScene& scene : scenes) {
+    std::uint64_t defaults = 0;
+    for (const ModelSwitch& m : modelSwitches(scene.scenario().settings)) {
+      if (interrupt.requested()) return points;
+      const Timed t = timed(repeats, true, m.settings.timestep, [&] { return scene.run(m.settings); });
+      if (m.name == "defaults") defaults = t.last.hash;
+      points.push_back({scene.name(), m.name, t.costMs, t.spread, t.last.error, t.last.hash == defaults, t.last.complete});
+      progress.advance(scene.name() + " " + m.name);
+    }
+  }
+  return points;
+}
+
+std::string switchTable(const std::vector<SwitchPoint>& points) {
+  std::ostringstream o;
+  o << "Model switches (full physics, each scene at its own settings; cost and error as in the sweep)\n";
+  o << "  " << padded("scene", 26) << padded("switch", 26) << padded("cost [ms/s]", 13) << padded("vs defaults", 13)
+    << padded("error [mm]", 12) << "outcome\n";
+  double base = 0.0;
+  for (const SwitchPoint& p : points) {
+    if (p.name == "defaults") base = p.costMs;
+    o << "  " << padded(p.scene, 26) << padded(p.name, 26) << padded(fixed(p.costMs, 3), 13)
+      << padded(p.name == "defaults" ? std::string("") : signedPercent(p.costMs / base), 13)
+      << padded(p.complete ? fixed(1000.0 * p.error, 4) : std::string("diverged"), 12)
+      << (p.name == "defaults" ? "" : p.sameState ? "bit-identical" : "differs") << "\n";
+  }
+  return o.str();
+}
+
+std::string switchCsv(const std::vector<SwitchPoint>& points) {
+  std::ostringstream o;
+  o << std::setprecision(9) << "scene,switch,cost_ms_per_s,spread,error_m,same_state,complete\n";
+  for (const SwitchPoint& p : points) {
+    o << p.scene << "," << p.name << "," << p.costMs << "," << p.spread << "," << p.error << "," << p.sameState << ","
+      << p.complete << "\n";
+  }
+  return o.str();
+}
+
+std::string scaleCsv(const std::vector<ScalePoint>& points) {
+  std::ostringstream o;
+  o << std::setprecision(9) << "cubes,switch,ms_per_step,spread,difference_m,same_state,complete\n";
+  for (const ScalePoint& p : points) {
+    o << p.cubes << "," << p.name << "," << p.msPerStep << "," << p.spread << "," << p.difference << "," << p.sameState
+      << "," << p.complete << "\n";
+  }
+  return o.str();
+}
+
+// The simple broadphase compares every pair: past this many cubes a run
+// takes minutes and says nothing new.
+constexpr int kSimpleBroadphaseLimit = 1000;
+
+std::vector<ScalePoint> measureScale(const std::vector<int>& sizes, int repeats, const InterruptGuard& interrupt,
+                                     std::ostream& err) {
+  std::vector<ScalePoint> points;
+  long total = 0;
+  for (int n : sizes) total += static_cast<long>(modelSwitches(CubeField::make(n).settings).size());
+  Progress progress(err, total);
+  for (int n : sizes) {
+    BenchScene field(CubeField::make(n));
+    BenchScene::Run defaults;
+    for (const ModelSwitch& m : modelSwitches(field.scenario().settings)) {
+      if (interrupt.requested()) return points;
+      progress.advance(field.name() + " " + m.name);
+      if (m.settings.broadphase == Broadphase::Simple && n > kSimpleBroadphaseLimit) continue;
+      // Large fields run long enough that a warm-up adds nothing but time.
+      const Timed t = timed(repeats, n < 1000, m.settings.timestep, [&] { return field.measure(m.settings); });
+      if (m.name == "defaults") defaults = t.last;
+      ScalePoint p{n, m.name, t.costMs * m.settings.timestep, t.spread, 0.0, t.last.hash == defaults.hash,
+                   t.last.complete};
+      for (std::size_t i = 0; i < t.last.centres.size() && i < defaults.centres.size(); ++i) {
+        p.difference = std::max(p.difference, (t.last.centres[i] - defaults.centres[i]).length());
+      }
+      points.push_back(p);
+    }
+  }
+  return points;
+}
+
+// The growth exponent of each switch's time per step over the sizes.
+std::map<std::string, double> exponents(const std::vector<ScalePoint>& points) {
+  std::map<std::string, std::pair<std::vector<double>, std::vector<double>>> series;
+  for (const ScalePoint& p : points) {
+    series[p.name].first.push_back(p.cubes);
+    series[p.name].second.push_back(p.msPerStep);
+  }
+  std::map<std::string, double> out;
+  for (const auto& [name, xy] : series) {
+    if (xy.first.size() >= 2) out[name] = growthExponent(xy.first, xy.second);
+  }
+  return out;
+}
+
+std::string scaleTable(const std::vector<ScalePoint>& points) {
+  std::ostringstream o;
+  const Scenario any = CubeField::make(1);
+  o << "Scale: the cube field (0.1 m cubes " << fixed(CubeField::kPitch, 2)
+    << " m apart, every other column pushed into the next), " << fixed(CubeField::kDuration, 1) << " s at "
+    << fixed(1.0 / any.settings.timestep, 0) << " Hz, " << any.settings.iterations << " iterations, "
+    << toString(any.settings.integrator) << "\n";
+  o << "  " << padded("cubes", 8) << padded("switch", 26) << padded("ms/step", 11) << padded("us/cube", 10)
+    << padded("spread", 9) << padded("vs defaults", 13) << padded("moved [mm]", 12) << "outcome\n";
+  double base = 0.0;
+  for (const ScalePoint& p : points) {
+    if (p.name == "defaults") base = p.msPerStep;
+    o << "  " << padded(std::to_string(p.cubes), 8) << padded(p.name, 26) << padded(fixed(p.msPerStep, 3), 11)
+      << padded(fixed(1000.0 * p.msPerStep / p.cubes, 2), 10) << padded(fixed(100.0 * p.spread, 0) + "%", 9)
+      << padded(p.name == "defaults" ? std::string("") : signedPercent(p.msPerStep / base), 13)
+      << padded(p.name == "defaults" ? std::string("") : fixed(1000.0 * p.difference, 4), 12)
+      << (!p.complete ? "diverged" : p.name == "defaults" ? "" : p.sameState ? "bit-identical" : "differs") << "\n";
+  }
+  o << "  growth exponent k of time per step ~ cubes^k (least squares over the sizes):\n";
+  for (const auto& [name, k] : exponents(points)) o << "    " << padded(name, 26) << fixed(k, 2) << "\n";
+  return o.str();
+}
+
 }  // namespace
 
 int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) {
@@ -249,10 +412,11 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
     }
   }
 
+  const bool sweepAsked = options.sweep || (!options.switches && options.scale.empty());
   const InterruptGuard interrupt;
   std::vector<BenchPoint> points;
   std::map<std::string, std::vector<std::string>> skipped;  // per scene, a line per mode it cannot run in
-  {
+  if (sweepAsked) {
     std::vector<std::pair<BenchScene*, SimulationMode>> jobs;
     long total = 0;
     for (BenchScene& scene : scenes) {
@@ -269,18 +433,15 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
     for (const auto& [scene, mode] : jobs) {
       for (const Settings& settings : sweep(options, scene->scenario(), mode)) {
         if (interrupt.requested()) break;
+        // The warm-up also makes the reference run, once per scene.
+        const Timed t = timed(options.repeats, true, settings.timestep, [&, scene = scene, mode = mode] {
+          return scene->run(settings, mode);
+        });
         BenchPoint p{scene->name(), settings.timestep, settings.iterations, settings.integrator, mode};
-        scene->run(settings, mode);  // warm-up (and the reference run, once)
-        std::vector<double> costs;
-        for (int r = 0; r < options.repeats; ++r) {
-          const BenchScene::Run run = scene->run(settings, mode);
-          costs.push_back(1000.0 * run.wallSeconds / std::max(run.simSeconds, settings.timestep));
-          p.error = run.error;
-          p.complete = p.complete && run.complete;
-        }
-        p.costMs = median(costs);
-        p.spread = (*std::max_element(costs.begin(), costs.end()) - *std::min_element(costs.begin(), costs.end())) /
-                   p.costMs;
+        p.costMs = t.costMs;
+        p.spread = t.spread;
+        p.error = t.last.error;
+        p.complete = t.last.complete;
         points.push_back(p);
         progress.advance(scene->name() + " " + std::string(toString(mode)) + " " + fixed(1.0 / settings.timestep, 0) +
                          " Hz");
@@ -288,6 +449,12 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
     }
   }
   markParetoFronts(points);
+  std::vector<SwitchPoint> switchPoints;
+  if (options.switches && !interrupt.requested()) switchPoints = measureSwitches(scenes, options.repeats, interrupt, err);
+  std::vector<ScalePoint> scalePoints;
+  if (!options.scale.empty() && !interrupt.requested()) {
+    scalePoints = measureScale(options.scale, options.repeats, interrupt, err);
+  }
 
   if (options.json) {
     nlohmann::json all = nlohmann::json::array();
@@ -297,15 +464,36 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
                      {"cost_ms_per_s", p.costMs}, {"spread", p.spread}, {"error_m", p.error},
                      {"complete", p.complete}, {"front", p.front}});
     }
-    out << all.dump(2) << "\n";
-  } else {
-    for (std::size_t i = 0; i < scenes.size(); ++i) {
-      out << (i ? "\n" : "") << table(points, scenes[i].name(), scenes[i].analytic());
-      for (const std::string& line : skipped[scenes[i].name()]) out << "  (" << line << ")\n";
+    nlohmann::json switches = nlohmann::json::array();
+    for (const SwitchPoint& p : switchPoints) {
+      switches.push_back({{"scene", p.scene}, {"switch", p.name}, {"cost_ms_per_s", p.costMs}, {"spread", p.spread},
+                          {"error_m", p.error}, {"same_state", p.sameState}, {"complete", p.complete}});
     }
+    nlohmann::json scale = nlohmann::json::array();
+    for (const ScalePoint& p : scalePoints) {
+      scale.push_back({{"cubes", p.cubes}, {"switch", p.name}, {"ms_per_step", p.msPerStep}, {"spread", p.spread},
+                       {"difference_m", p.difference}, {"same_state", p.sameState}, {"complete", p.complete}});
+    }
+    out << nlohmann::json{{"sweep", all}, {"switches", switches}, {"scale", scale}, {"growth_exponents", exponents(scalePoints)}}
+               .dump(2)
+        << "\n";
+  } else {
+    const char* gap = "";
+    if (sweepAsked) {
+      for (std::size_t i = 0; i < scenes.size(); ++i) {
+        out << (i ? "\n" : "") << table(points, scenes[i].name(), scenes[i].analytic());
+        for (const std::string& line : skipped[scenes[i].name()]) out << "  (" << line << ")\n";
+      }
+      gap = "\n";
+    }
+    if (!switchPoints.empty()) {
+      out << gap << switchTable(switchPoints);
+      gap = "\n";
+    }
+    if (!scalePoints.empty()) out << gap << scaleTable(scalePoints);
   }
   int status = kExitOk;
-  if (options.frontFile && !interrupt.requested()) {
+  if (options.frontFile && sweepAsked && !interrupt.requested()) {
     if (const std::string problem = AtomicFile::write(*options.frontFile, ToleranceFront::fromBench(points).toJson());
         !problem.empty()) {
       err << "tabletop bench: --front: " << problem << "\n";
@@ -314,8 +502,15 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
   }
   if (options.outDir) {
     const std::filesystem::path dir(*options.outDir);
-    std::string problem = AtomicFile::write((dir / "bench.csv").string(), csv(points));
-    for (std::size_t i = 0; problem.empty() && i < scenes.size(); ++i) {
+    std::string problem;
+    if (sweepAsked) problem = AtomicFile::write((dir / "bench.csv").string(), csv(points));
+    if (problem.empty() && !switchPoints.empty()) {
+      problem = AtomicFile::write((dir / "switches.csv").string(), switchCsv(switchPoints));
+    }
+    if (problem.empty() && !scalePoints.empty()) {
+      problem = AtomicFile::write((dir / "scale.csv").string(), scaleCsv(scalePoints));
+    }
+    for (std::size_t i = 0; sweepAsked && problem.empty() && i < scenes.size(); ++i) {
       problem = writeGnuplotFile((dir / ("bench_" + scenes[i].name() + ".png")).string(),
                                  plotScript(points, scenes[i].name()), 900, 640);
     }

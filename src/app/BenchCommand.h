@@ -29,6 +29,12 @@ struct BenchOptions {
   /// --modes: bullet sweeps the whole grid; compat and rules, the cheap
   /// end, sweep the rates at the scene's own iterations and integrator.
   std::vector<SimulationMode> modes{SimulationMode::Bullet, SimulationMode::Compat, SimulationMode::Rules};
+  /// Sections: the sweep, the model switches on each scene, the cube field
+  /// at these sizes. With none asked for, the sweep alone; asking for
+  /// --switches or --scale leaves the sweep out unless --sweep is given.
+  bool sweep = false;
+  bool switches = false;
+  std::vector<int> scale;
 };
 
 /// Declares bench's options on `command`.
@@ -42,6 +48,12 @@ void addBenchOptions(CLI::App& command, BenchOptions& options);
 /// DIR/bench.csv and a log-log plot of error against cost per scene
 /// (DIR/bench_SCENE.png, one curve per iteration count). Ctrl-C stops the
 /// sweep, keeps what was measured and writes it (status 130).
+///
+/// --switches measures each model switch (ModelSwitch) on every scene at
+/// its own settings: cost, error, and whether the outcome is bit-identical
+/// to the defaults'. --scale N,... runs the cube field (CubeField) of each
+/// size with each switch: wall time per step, and the growth exponent of
+/// time against the number of cubes.
 int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err);
 
 }  // namespace tabletop

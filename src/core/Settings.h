@@ -32,7 +32,7 @@ struct Settings {
   bool legsWhenReachable = false;
   /// The floor pairs only with bodies whose bounding box comes down to it
   /// (a half-space's bound), not with every body (an infinite plane's).
-  bool floorPairsNearFloor = false;
+  bool floorPairsNearFloor = true;
 };
 
 }  // namespace tabletop

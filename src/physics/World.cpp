@@ -153,6 +153,10 @@ Shape& World::addEntity(std::unique_ptr<Shape> shape, double mass, const Materia
   btRigidBody* body = shape->body();
   body->setUserIndex(static_cast<int>(entities_.size()));
   body->setUserPointer(const_cast<Material*>(&shape->material()));
+  // Bullet's own thresholds (0.8 m/s, 1 rad/s) would freeze a ball still
+  // rolling at half a metre a second; a body sleeps only once it has been
+  // at rest, as observe() judges rest, for gDeactivationTime.
+  body->setSleepingThresholds(kRestSpeed, kRestSpin);
   if (!settings_.sleeping) body->setActivationState(DISABLE_DEACTIVATION);
   world_->addRigidBody(body);
   indexOf_.emplace(shape->name(), entities_.size());
@@ -344,6 +348,16 @@ void World::start() {
   started_ = true;
   world_->performDiscreteCollisionDetection();
   observe(false);
+  // With sleeping on, what rests on a support at the start begins asleep,
+  // as Bullet would put it after gDeactivationTime (2 s) at rest: it costs
+  // nothing until a push or a moving body touching it wakes it (Bullet
+  // wakes an island with any active body in it). Bodies in the air stay
+  // awake.
+  if (settings_.sleeping) {
+    for (std::size_t i = 0; i < entities_.size(); ++i) {
+      if (trackers_[i].support != kNoSupport) entities_[i]->body()->setActivationState(ISLAND_SLEEPING);
+    }
+  }
 }
 
 void World::step() {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/StateHash.h"
 #include "sim/SceneBuilder.h"
 #include "sim/ScriptRunner.h"
 
@@ -11,23 +12,30 @@ namespace tabletop {
 BenchScene::BenchScene(Scenario scenario)
     : scenario_(std::move(scenario)), analytic_(AnalyticCase::forScenario(scenario_)) {}
 
+namespace {
+
+void collect(const RunResult& r, BenchScene::Run& out) {
+  out.wallSeconds = r.wallSeconds;
+  out.simSeconds = r.simTime;
+  out.complete = r.complete;
+  out.hash = stateHash(r.entities);
+  out.centres.clear();
+  for (const EntityState& e : r.entities) out.centres.push_back(e.position);
+}
+
+}  // namespace
+
 BenchScene::Run BenchScene::run(const Settings& settings, SimulationMode mode) {
   // The wall time is the script's, stepping only: building the scene is
   // not part of the cost per simulated second.
   Run out;
   if (analytic_) {
     const AnalyticResult r = analytic_->run(scenario_, settings, mode);
-    out.wallSeconds = r.run.wallSeconds;
+    collect(r.run, out);
     out.error = r.positionError;
-    out.simSeconds = r.run.simTime;
-    out.complete = r.run.complete;
     return out;
   }
-  auto simulation = buildSimulation(scenario_, settings, mode);
-  const RunResult r = runScript(scenario_, settings, *simulation);
-  out.wallSeconds = r.wallSeconds;
-  out.simSeconds = r.simTime;
-  out.complete = r.complete;
+  out = measure(settings, mode);
   if (!reference_) {
     Settings fine = settings;
     fine.timestep = kReferenceTimestep;
@@ -40,10 +48,34 @@ BenchScene::Run BenchScene::run(const Settings& settings, SimulationMode mode) {
     reference_.emplace();
     for (const EntityState& e : ref.entities) reference_->push_back(e.position);
   }
-  for (std::size_t i = 0; i < r.entities.size() && i < reference_->size(); ++i) {
-    out.error = std::max(out.error, (r.entities[i].position - (*reference_)[i]).length());
+  for (std::size_t i = 0; i < out.centres.size() && i < reference_->size(); ++i) {
+    out.error = std::max(out.error, (out.centres[i] - (*reference_)[i]).length());
   }
   return out;
+}
+
+BenchScene::Run BenchScene::measure(const Settings& settings, SimulationMode mode) {
+  Run out;
+  auto simulation = buildSimulation(scenario_, settings, mode);
+  collect(runScript(scenario_, settings, *simulation), out);
+  return out;
+}
+
+double growthExponent(const std::vector<double>& x, const std::vector<double>& y) {
+  const std::size_t n = std::min(x.size(), y.size());
+  double mx = 0.0, my = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    mx += std::log(x[i]);
+    my += std::log(y[i]);
+  }
+  mx /= static_cast<double>(n);
+  my /= static_cast<double>(n);
+  double sxy = 0.0, sxx = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    sxy += (std::log(x[i]) - mx) * (std::log(y[i]) - my);
+    sxx += (std::log(x[i]) - mx) * (std::log(x[i]) - mx);
+  }
+  return sxx > 0.0 ? sxy / sxx : std::nan("");
 }
 
 void markParetoFronts(std::vector<BenchPoint>& points) {

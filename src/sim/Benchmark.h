@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -34,8 +35,13 @@ class BenchScene {
     double wallSeconds = 0.0;
     double simSeconds = 0.0;
     bool complete = true;
+    std::uint64_t hash = 0;     ///< stateHash of the final state
+    std::vector<Vec3> centres;  ///< every entity's final centre, m
   };
   Run run(const Settings& settings, SimulationMode mode = SimulationMode::Bullet);
+  /// As run(), without the error (no reference run is made): for scenes
+  /// too large to run at the reference settings.
+  Run measure(const Settings& settings, SimulationMode mode = SimulationMode::Bullet);
 
  private:
   Scenario scenario_;
@@ -56,6 +62,33 @@ struct BenchPoint {
   bool complete = true;
   bool front = false;     ///< on the scene's Pareto front of cost and error
 };
+
+/// A model switch (ModelSwitch) measured on a scene, in full physics at
+/// the scene's own settings.
+struct SwitchPoint {
+  std::string scene;
+  std::string name;       ///< "defaults", "sleeping=on", ...
+  double costMs = 0.0;    ///< median wall milliseconds per simulated second
+  double spread = 0.0;
+  double error = 0.0;     ///< m, as BenchPoint's
+  bool sameState = true;  ///< the final state is bit-identical to the defaults'
+  bool complete = true;
+};
+
+/// The cube field (CubeField) of one size with one model switch.
+struct ScalePoint {
+  int cubes = 0;
+  std::string name;           ///< as SwitchPoint's
+  double msPerStep = 0.0;     ///< median wall milliseconds per step
+  double spread = 0.0;
+  double difference = 0.0;    ///< m: the largest distance of a final centre from the defaults'
+  bool sameState = true;
+  bool complete = true;
+};
+
+/// The least-squares slope of log(y) against log(x): the exponent k of
+/// y ~ x^k. Needs two distinct x at least; NaN otherwise.
+double growthExponent(const std::vector<double>& x, const std::vector<double>& y);
 
 /// Marks, among the points of each scene, those no other point beats in
 /// both cost and error (the Pareto front).

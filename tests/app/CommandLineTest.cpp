@@ -388,7 +388,8 @@ TEST(CommandLine, BenchSweepsTheModes) {
                   " --cases straight_line_transfer --repeats 1 --rates 60,240 --iterations 4,10 --json");
   ASSERT_EQ(o.status, 0) << o.err;
   std::map<std::string, int> perMode;
-  for (const auto& p : nlohmann::json::parse(o.out)) ++perMode[p["mode"].get<std::string>()];
+  const nlohmann::json j = nlohmann::json::parse(o.out);
+  for (const auto& p : j["sweep"]) ++perMode[p["mode"].get<std::string>()];
   EXPECT_EQ(perMode["bullet"], 2 * 2 * 2);
   EXPECT_EQ(perMode["compat"], 2);
   EXPECT_EQ(perMode["rules"], 2);
@@ -396,6 +397,33 @@ TEST(CommandLine, BenchSweepsTheModes) {
   ASSERT_EQ(o.status, 0) << o.err;
   EXPECT_NE(o.out.find("(not in mode compat: "), std::string::npos) << o.out;
   EXPECT_NE(o.out.find("(not in mode rules: "), std::string::npos) << o.out;
+}
+
+// --switches and --scale are sections of their own: asked for alone they
+// leave the sweep out; each switch is measured on every scene, and each
+// size of the cube field with each switch, with a growth exponent.
+TEST(CommandLine, BenchMeasuresTheModelSwitchesAndTheScale) {
+  Outcome o = run(kBin + "tabletop bench --scenarios " + kScenarios +
+                  " --cases free_flight --repeats 1 --switches --scale 4,9 --json");
+  ASSERT_EQ(o.status, 0) << o.err;
+  const auto j = nlohmann::json::parse(o.out);
+  EXPECT_TRUE(j["sweep"].empty());
+  ASSERT_EQ(j["switches"].size(), 6u);
+  EXPECT_EQ(j["switches"][0]["switch"], "defaults");
+  for (const auto& p : j["switches"]) {
+    EXPECT_EQ(p["scene"], "free_flight");
+    EXPECT_GT(p["cost_ms_per_s"].get<double>(), 0.0);
+  }
+  ASSERT_EQ(j["scale"].size(), 2u * 6u);
+  EXPECT_EQ(j["scale"][0]["cubes"], 4);
+  EXPECT_TRUE(j["growth_exponents"].contains("defaults"));
+  o = run(kBin + "tabletop bench --scenarios " + kScenarios + " --cases free_flight --repeats 1 --switches --scale 4,9");
+  ASSERT_EQ(o.status, 0) << o.err;
+  EXPECT_NE(o.out.find("Model switches"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("growth exponent"), std::string::npos) << o.out;
+  EXPECT_EQ(o.out.find("(error against the closed form)"), std::string::npos) << o.out;
+  o = run(kBin + "tabletop bench --scale 0");
+  EXPECT_EQ(o.status, 2);
 }
 
 // Every mode prints the same JSON keys for each entity.

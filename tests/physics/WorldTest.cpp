@@ -4,6 +4,7 @@
 #include "physics/World.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <gtest/gtest.h>
 
@@ -146,6 +147,61 @@ TEST(WorldDeterminism, SameSceneSameHash) {
     return stateHash(w.snapshot());
   };
   EXPECT_EQ(run(), run());
+}
+
+
+// The legs join the collision world only once a body can reach them. A
+// cube sliding on the top never brings them in; a cube pushed over the
+// edge does, while its lowest point is still above the top's underside
+// (0.71 m), so it meets them if it falls onto them.
+TEST(WorldModel, LegsJoinOnlyOnceABodyCanReachThem) {
+  Settings s;
+  s.legsWhenReachable = true;
+  World slides(s, TableSpec{});
+  slides.addEntity(std::make_unique<Cube>("A", 0.1), 0.5, Material{0.4, 0, 0, 0}, btVector3(-0.3, seated(0.8), 0), 0);
+  slides.push(Arrow{"A", DirectionDef::Left, 0}, {PushMagnitude::Kind::Step, 0.3});
+  for (int i = 0; i < 240; ++i) slides.step();
+  EXPECT_FALSE(slides.legsInWorld());
+
+  World drops(s, TableSpec{});
+  Shape& a = drops.addEntity(std::make_unique<Cube>("A", 0.1), 0.5, Material{0.4, 0, 0, 0},
+                             btVector3(0.3, seated(0.8), 0), 0);
+  drops.push(Arrow{"A", DirectionDef::Left, 0}, {PushMagnitude::Kind::Step, 0.6});
+  double lowestWhenJoined = -1.0;
+  for (int i = 0; i < 480 && lowestWhenJoined < 0; ++i) {
+    btVector3 low, high;  // the cube's bounding box, which holds its lowest point
+    a.body()->getCollisionShape()->getAabb(a.body()->getWorldTransform(), low, high);
+    const double lowest = low.y();
+    drops.step();
+    if (drops.legsInWorld()) lowestWhenJoined = lowest;
+  }
+  ASSERT_GT(lowestWhenJoined, 0.0) << "the legs never joined";
+  EXPECT_GT(lowestWhenJoined, drops.table().undersideHeight());
+}
+
+// A ball rolled along the floor into a leg bounces off it: the legs are
+// there from the start for a body below the top, and the outcome is
+// the same, to rounding, as with the table built in one compound.
+TEST(WorldModel, ABallOnTheFloorMeetsALegEitherWay) {
+  auto run = [](bool whenReachable) {
+    Settings s;
+    s.legsWhenReachable = whenReachable;
+    World w(s, TableSpec{});
+    const btVector3 leg = w.table().legCentre(3);
+    w.addEntity(std::make_unique<Sphere>("S", 0.05), 0.2, Material{0.5, 0, 0, 0.8},
+                btVector3(leg.x() - 0.3, seated(0.05), leg.z()), 0);
+    w.push(Arrow{"S", std::nullopt, 0}, {PushMagnitude::Kind::Impulse, 0.3});
+    for (int i = 0; i < 240; ++i) w.step();
+    return w.snapshot();
+  };
+  const auto reachable = run(true);
+  const auto always = run(false);
+  EXPECT_LT(reachable[0].linearVelocity.x, 0.0) << "the ball did not bounce off the leg";
+  // The legs' contact is found in a compound of four instead of five
+  // children, whose transforms compose in another order: the two runs
+  // agree to rounding, 1e-12 m and m/s.
+  EXPECT_LT((reachable[0].position - always[0].position).length(), 1e-12);
+  EXPECT_LT((reachable[0].linearVelocity - always[0].linearVelocity).length(), 1e-12);
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "sim/Benchmark.h"
 
+#include <cmath>
+
 #include <gtest/gtest.h>
 
 namespace tabletop {
@@ -27,6 +29,21 @@ TEST(Benchmark, ParetoFrontKeepsOnlyUnbeatenPoints) {
   EXPECT_TRUE(p[4].front);
   EXPECT_TRUE(p[5].front);   // alone in its scene
   EXPECT_FALSE(p[6].front);  // diverged
+}
+
+// The growth exponent is the slope of log y on log x: exact for a power
+// law (to 1e-12), the least-squares slope for a noisy one, NaN with one
+// size.
+TEST(Benchmark, GrowthExponentFitsAPowerLaw) {
+  std::vector<double> x{10, 100, 1000, 10000}, y;
+  for (double n : x) y.push_back(3.0 * std::pow(n, 1.5));
+  EXPECT_NEAR(growthExponent(x, y), 1.5, 1e-12);
+  // y = n times 2, 1/2, 2, 1/2: with u = log10 n - 2.5 = -1.5 .. 1.5 the
+  // slope is 1 + sum(u e) / (sum(u^2) log 10), e = +-log 2, which is
+  // 1 - 2 log 2 / (5 log 10) = 0.880.
+  const std::vector<double> noisy{20, 50, 2000, 5000};
+  EXPECT_NEAR(growthExponent(x, noisy), 1.0 - 2.0 * std::log(2.0) / (5.0 * std::log(10.0)), 1e-12);
+  EXPECT_TRUE(std::isnan(growthExponent({10}, {1})));
 }
 
 }  // namespace
