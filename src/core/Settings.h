@@ -29,7 +29,7 @@ struct Settings {
   Broadphase broadphase = Broadphase::Dbvt;  ///< how overlapping pairs are found
   /// The table's legs join the collision world only once a body can reach
   /// them (its bounding box comes down to the underside of the top).
-  bool legsWhenReachable = false;
+  bool legsWhenReachable = true;
   /// The floor pairs only with bodies whose bounding box comes down to it
   /// (a half-space's bound), not with every body (an infinite plane's).
   bool floorPairsNearFloor = true;
