@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/DirectionDef.h"
+#include "core/EnumNames.h"
 #include "scenario/JsonLocator.h"
 #include "scenario/ScenarioError.h"
 
@@ -232,6 +233,23 @@ TableSpec readTable(const json& j, std::vector<Problem>& problems) {
   return t;
 }
 
+// A key whose value is one of an enum's names: "expected "a", "b" or
+// "c", got "x"" otherwise.
+template <class Enum, std::size_t N>
+void choice(Fields& f, const std::string& key, const Enum (&values)[N], Enum& into) {
+  if (!f.has(key)) return;
+  const std::string name = f.string(key, "");
+  if (const auto v = enumFromName(name, values)) {
+    into = *v;
+  } else if (!name.empty()) {
+    std::string expected;
+    for (std::size_t i = 0; i < N; ++i) {
+      expected += (i == 0 ? "" : i + 1 == N ? " or " : ", ") + ("\"" + std::string(toString(values[i])) + "\"");
+    }
+    f.fail(f.at(key), "expected " + expected + ", got \"" + name + "\"");
+  }
+}
+
 Settings readSettings(const json& j, std::vector<Problem>& problems) {
   Settings s;
   Fields f(j, "/settings", problems);
@@ -247,22 +265,8 @@ Settings readSettings(const json& j, std::vector<Problem>& problems) {
   s.gravity = f.number("gravity", kGravity, s.gravity);
   s.endAtRest = f.boolean("end_at_rest", s.endAtRest);
   s.sleeping = f.boolean("sleeping", s.sleeping);
-  if (f.has("integrator")) {
-    const std::string name = f.string("integrator", "");
-    if (const auto i = integratorFromString(name)) {
-      s.integrator = *i;
-    } else if (!name.empty()) {
-      f.fail(f.at("integrator"), "expected \"euler\" or \"trapezoid\", got \"" + name + "\"");
-    }
-  }
-  if (f.has("broadphase")) {
-    const std::string name = f.string("broadphase", "");
-    if (const auto b = broadphaseFromString(name)) {
-      s.broadphase = *b;
-    } else if (!name.empty()) {
-      f.fail(f.at("broadphase"), "expected \"dbvt\", \"sap\" or \"simple\", got \"" + name + "\"");
-    }
-  }
+  choice(f, "integrator", kAllIntegrators, s.integrator);
+  choice(f, "broadphase", kAllBroadphases, s.broadphase);
   s.legsWhenReachable = f.boolean("legs_when_reachable", s.legsWhenReachable);
   s.floorPairsNearFloor = f.boolean("floor_pairs_near_floor", s.floorPairsNearFloor);
   f.finish();
