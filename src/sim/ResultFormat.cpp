@@ -1,5 +1,6 @@
 #include "sim/ResultFormat.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <sstream>
 
@@ -62,10 +63,13 @@ std::string formatText(const RunResult& r) {
       << r.settings.iterations << " iterations, " << toString(r.settings.integrator) << " integrator; simulated " << fixed(r.simTime, 3) << " s in "
       << r.steps << " steps (" << fixed(r.wallSeconds, 3) << " s wall)\n";
   if (!r.complete) out << "  INCOMPLETE, the run stopped: " << r.failure << "\n";
-  out << "  " << padded("entity", 10) << padded("shape", 9) << padded("x [m]", 9) << padded("y [m]", 9)
+  // The name column fits the longest name, so the columns after it align.
+  std::size_t nameWidth = 10;
+  for (const EntityState& e : r.entities) nameWidth = std::max(nameWidth, e.name.size() + 2);
+  out << "  " << padded("entity", nameWidth) << padded("shape", 9) << padded("x [m]", 9) << padded("y [m]", 9)
       << padded("z [m]", 9) << padded("yaw [deg]", 10) << padded("status", 22) << "support\n";
   for (const EntityState& e : r.entities) {
-    out << "  " << padded(e.name, 10) << padded(std::string(toString(e.shape)), 9)
+    out << "  " << padded(e.name, nameWidth) << padded(std::string(toString(e.shape)), 9)
         << padded(fixed(e.position.x, 4), 9) << padded(fixed(e.position.y, 4), 9)
         << padded(fixed(e.position.z, 4), 9) << padded(fixed(e.yawDegrees, 1), 10)
         << padded(std::string(toString(e.status)), 22) << e.support << "\n";
