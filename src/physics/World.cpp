@@ -105,16 +105,16 @@ World::World(const Settings& settings, const TableSpec& table, const Material& g
   // then ended 2.8 mm short and turned 2 degrees).
   world_->getDispatchInfo().m_enableSatConvex = true;
 
-  table_.body().setUserPointer(const_cast<Material*>(&table_.spec().material));
+  // The legs, when separate, are the table too: its material, its name.
+  for (btRigidBody* part : {&table_.body(), table_.legsBody()}) {
+    if (!part) continue;
+    part->setUserPointer(const_cast<Material*>(&table_.spec().material));
+    part->setUserIndex(kTableIndex);
+  }
   ground_.body().setUserPointer(const_cast<Material*>(&ground_.material()));
-  table_.body().setUserIndex(kTableIndex);
   ground_.body().setUserIndex(kGroundIndex);
   world_->addRigidBody(&table_.body());
   world_->addRigidBody(&ground_.body());
-  if (btRigidBody* legs = table_.legsBody()) {
-    legs->setUserPointer(const_cast<Material*>(&table_.spec().material));
-    legs->setUserIndex(kTableIndex);
-  }
 }
 
 World::~World() {
