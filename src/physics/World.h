@@ -55,6 +55,9 @@ class World : public Simulation {
   /// Pairs of bodies ("table" for the table) that interpenetrate by more
   /// than `tolerance` metres in the current state.
   std::vector<std::pair<std::string, std::string>> overlaps(double tolerance);
+  /// How deep the deepest contact of the last step is, metres (0 if none
+  /// penetrates).
+  double deepestPenetration() const;
 
   /// Makes entity `i` kinematic: it keeps still, or goes where
   /// placeKinematic() puts it, and pushes dynamic bodies out of its way

@@ -27,6 +27,8 @@ struct EntitySpec {
   Colour colour;
   double mass = 1.0;       ///< kg
   Material material;
+  Vec3 velocity;           ///< m/s at the start, world frame (full physics only)
+  Vec3 spin;               ///< angular velocity at the start, rad/s, world frame (full physics only)
   std::string path;        ///< JSON pointer of this entity in its file
 };
 

@@ -47,6 +47,9 @@ constexpr Range kSpan{0.0, 3600.0, true};         ///< seconds, positive
 constexpr Range kGravity{0.0, 100.0, false};      ///< m/s^2
 constexpr Range kStep{0.0, 100.0, true};          ///< metres
 constexpr Range kImpulse{0.0, 1e6, true};         ///< N s
+constexpr Range kSpeedTolerance{0.0, 1.0, false};  ///< m/s
+constexpr Range kSpeed{-1e3, 1e3, false};         ///< m/s, one component
+constexpr Range kSpin{-1e4, 1e4, false};          ///< rad/s, one component
 
 std::string number(double v) {
   std::ostringstream o;
@@ -266,6 +269,8 @@ Settings readSettings(const json& j, std::vector<Problem>& problems) {
   s.endAtRest = f.boolean("end_at_rest", s.endAtRest);
   s.sleeping = f.boolean("sleeping", s.sleeping);
   choice(f, "integrator", kAllIntegrators, s.integrator);
+  s.warmStart = f.number("warm_start", kUnitInterval, s.warmStart);
+  s.solverTolerance = f.number("solver_tolerance", kSpeedTolerance, s.solverTolerance);
   choice(f, "broadphase", kAllBroadphases, s.broadphase);
   s.legsWhenReachable = f.boolean("legs_when_reachable", s.legsWhenReachable);
   s.floorPairsNearFloor = f.boolean("floor_pairs_near_floor", s.floorPairsNearFloor);
@@ -342,6 +347,16 @@ EntitySpec readEntity(const json& j, const std::string& path, const std::vector<
   e.colour = readColour(f, "colour", e.colour);
   e.mass = f.number("mass", kMass, e.mass, true);
   e.material = readMaterial(f, "material", e.material, problems);
+  // The motion it starts with (full physics only; the report's rules start
+  // every entity at rest).
+  const auto vector3 = [&](const char* key, const Range& range, Vec3& into) {
+    if (const json* v = f.get(key, false)) {
+      const auto c = f.numbers(*v, f.at(key), 3, 3, range);
+      if (c.size() == 3) into = {c[0], c[1], c[2]};
+    }
+  };
+  vector3("velocity", kSpeed, e.velocity);
+  vector3("spin", kSpin, e.spin);
   f.finish();
   return e;
 }

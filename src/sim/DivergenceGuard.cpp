@@ -71,10 +71,15 @@ DivergenceGuard::DivergenceGuard(const Scenario& scenario, const Settings& setti
   energy_ += kineticEnergy(start);
 }
 
+// Translational, and an upper bound on the rotational: no moment of
+// inertia exceeds m R^2, R the bounding radius.
 double DivergenceGuard::kineticEnergy(const std::vector<BodyMotion>& states) const {
   double e = 0.0;
   for (std::size_t i = 0; i < states.size() && i < masses_.size(); ++i) {
-    e += 0.5 * masses_[i] * states[i].linearVelocity.dot(states[i].linearVelocity);
+    const double r2 = radii_[i] * radii_[i];
+    e += 0.5 * masses_[i] *
+         (states[i].linearVelocity.dot(states[i].linearVelocity) +
+          r2 * states[i].angularVelocity.dot(states[i].angularVelocity));
   }
   return e;
 }

@@ -36,7 +36,9 @@ class DivergenceError : public std::runtime_error {
 ///    |w| <= kSafety * sqrt(5) * sqrt(2 E / m_min) / r_min + kSlack / r_min,
 ///    where E is an upper bound on the scene's mechanical energy (the
 ///    potential energy of every body above the floor at the start, plus the
-///    kinetic energy each push adds), m_min the lightest body and r_min
+///    kinetic energy at the start and what each push adds, its rotational
+///    part bounded by m R^2 w^2 / 2 with R the bounding radius, as no
+///    moment of inertia exceeds m R^2), m_min the lightest body and r_min
 ///    the smallest half-dimension of any body. No body can hold more than
 ///    all of E; every body's inertia about any axis is at least
 ///    0.2 m r_min^2 (a solid sphere's 2/5 m r^2 is the least of the shapes,

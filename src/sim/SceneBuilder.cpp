@@ -53,7 +53,9 @@ std::unique_ptr<World> buildWorld(const Scenario& scenario, const Settings& sett
       const Shape* base = world->find(e.on);
       centre.setY(seated(base->position().y() + base->above() + shape->below()));
     }
-    world->addEntity(std::move(shape), e.mass, e.material, centre, e.yawDegrees);
+    btRigidBody* body = world->addEntity(std::move(shape), e.mass, e.material, centre, e.yawDegrees).body();
+    body->setLinearVelocity(btVector3(e.velocity.x, e.velocity.y, e.velocity.z));
+    body->setAngularVelocity(btVector3(e.spin.x, e.spin.y, e.spin.z));
   }
 
   std::vector<Problem> problems;
@@ -108,6 +110,20 @@ std::vector<rules::RuleBody> buildRuleBodies(const Scenario& scenario) {
 
 std::unique_ptr<Simulation> buildSimulation(const Scenario& scenario, const Settings& settings,
                                             SimulationMode mode) {
+  if (mode != SimulationMode::Bullet) {
+    // The report's rules start every entity at rest.
+    std::vector<Problem> moving;
+    for (const EntitySpec& e : scenario.entities) {
+      for (const auto& [key, v] : {std::pair{"velocity", e.velocity}, std::pair{"spin", e.spin}}) {
+        if (v.x != 0.0 || v.y != 0.0 || v.z != 0.0) {
+          moving.push_back({e.path + "/" + key, "expected no starting " + std::string(key) + " in mode " +
+                                                     std::string(toString(mode)) +
+                                                     ": the report's rules start every entity at rest"});
+        }
+      }
+    }
+    if (!moving.empty()) throw ScenarioError(scenario.file, std::move(moving));
+  }
   std::unique_ptr<World> world = buildWorld(scenario, settings);
   switch (mode) {
     case SimulationMode::Bullet: return world;

@@ -159,11 +159,19 @@ TEST(AnalyticCase, StackedCubeRidesAlongAfterSlippingBack) {
 }
 
 // Past the threshold (the table grips A harder than A grips B), both
-// distances to 0.1 mm (measured 0.05 mm).
+// distances to 0.1 mm at 20 iterations (measured 0.064 mm). At the default
+// 10 they are within 0.2 mm (measured 0.17 mm; 0.05 mm with Bullet's
+// partial warm start of 0.85): each step starts from the whole of the last
+// step's impulses, and 10 sweeps do not finish shifting the load as the
+// rider slips. Full warm starting is what keeps tall stacks standing
+// (README, "Hard cases"); this is its price here.
 TEST(AnalyticCase, StackedCubeSlipsOnPastTheThreshold) {
-  const Case c = run("stack_rider_slips");
+  const Case c = run("stack_rider_slips", Integrator::Trapezoid, 20);
   EXPECT_LE(measure(c, "A distance slid").error(), 1e-4);
   EXPECT_LE(measure(c, "B distance carried").error(), 1e-4);
+  const Case byDefault = run("stack_rider_slips");
+  EXPECT_LE(measure(byDefault, "A distance slid").error(), 2e-4);
+  EXPECT_LE(measure(byDefault, "B distance carried").error(), 2e-4);
   // And the two cases differ where the closed form says they do: the rider
   // ends behind its start on A in both, by 16.3 mm and by 13.9 mm.
   const Case rides = run("stack_rides_along");
@@ -171,7 +179,7 @@ TEST(AnalyticCase, StackedCubeSlipsOnPastTheThreshold) {
     return measure(k, "B distance carried").truth - measure(k, "A distance slid").truth;
   };
   EXPECT_NEAR(lag(rides), -0.0163, 1e-4);
-  EXPECT_NEAR(lag(c), -0.0139, 1e-4);
+  EXPECT_NEAR(lag(byDefault), -0.0139, 1e-4);
 }
 
 // The straight-line transfer by the rules is exact (to 1 nm); compat, Bullet
