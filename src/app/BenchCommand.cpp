@@ -24,6 +24,7 @@
 #include "sim/ModelSwitch.h"
 #include "sim/ResultFormat.h"
 #include "sim/SceneBuilder.h"
+#include "sim/StabilityProbe.h"
 #include "sim/ScriptRunner.h"
 #include "sim/ToleranceFront.h"
 
@@ -181,6 +182,9 @@ void addBenchOptions(CLI::App& command, BenchOptions& options) {
                      "Time the cube field of these sizes with each model switch (e.g. 10,100,1000,10000)")
       ->delimiter(',')
       ->check(CLI::Range(1, 100000));
+  command.add_flag("--hard", options.hard,
+                   "Run each hard case (SCENARIOS/hard) once at its own settings: cost, drift, penetration, "
+                   "speed at rest, energy gain");
   std::map<std::string, SimulationMode> modes;
   for (SimulationMode m : kAllModes) modes.emplace(std::string(toString(m)), m);
   command.add_option("--modes", options.modes,
@@ -358,6 +362,72 @@ std::map<std::string, double> exponents(const std::vector<ScalePoint>& points) {
   return out;
 }
 
+// One hard case, run once (README, "Hard cases").
+struct HardPoint {
+  std::string scene;
+  Settings settings;
+  StabilityReport report;
+};
+
+std::vector<HardPoint> measureHard(const std::string& dir, const InterruptGuard& interrupt, std::ostream& err) {
+  std::vector<std::string> files;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+    if (entry.path().extension() == ".json") files.push_back(entry.path().string());
+  }
+  std::sort(files.begin(), files.end());
+  std::vector<HardPoint> points;
+  Progress progress(err, static_cast<long>(files.size()));
+  for (const std::string& file : files) {
+    if (interrupt.requested()) break;
+    const Scenario s = ScenarioLoader::loadFile(file);
+    points.push_back({s.name, s.settings, probeStability(s, s.settings)});
+    progress.advance(s.name);
+  }
+  return points;
+}
+
+nlohmann::json hardJson(const HardPoint& p) {
+  const StabilityReport& r = p.report;
+  return {{"scene", p.scene}, {"timestep", p.settings.timestep}, {"iterations", p.settings.iterations},
+          {"cost_ms_per_s", r.cost()}, {"worst_drift_m", r.worstDrift}, {"worst_penetration_m", r.worstPenetration},
+          {"rest_speed_m_per_s", r.restSpeed}, {"energy_gain_j", r.energyGain}, {"energy_scale_j", r.energyScale},
+          {"complete", r.complete}, {"failure", r.failure}};
+}
+
+std::string hardCsv(const std::vector<HardPoint>& points) {
+  std::ostringstream o;
+  o << std::setprecision(17)
+    << "scene,timestep_s,iterations,cost_ms_per_s,worst_drift_m,worst_penetration_m,rest_speed_m_per_s,energy_gain_j,"
+       "energy_scale_j,complete\n";
+  for (const HardPoint& p : points) {
+    const StabilityReport& r = p.report;
+    o << p.scene << "," << p.settings.timestep << "," << p.settings.iterations << "," << r.cost() << ","
+      << r.worstDrift << "," << r.worstPenetration << "," << r.restSpeed << "," << r.energyGain << ","
+      << r.energyScale << "," << (r.complete ? 1 : 0) << "\n";
+  }
+  return o.str();
+}
+
+std::string hardTable(const std::vector<HardPoint>& points) {
+  std::ostringstream o;
+  o << "Hard cases (full physics, each at its own settings, one run)\n";
+  std::size_t width = 5;
+  for (const HardPoint& p : points) width = std::max(width, p.scene.size());
+  o << "  " << std::left << std::setw(static_cast<int>(width)) << "scene"
+    << "  rate [Hz]  iterations  cost [ms/s]  drift [mm]  penetration [mm]  rest [mm/s]  energy gain\n";
+  for (const HardPoint& p : points) {
+    const StabilityReport& r = p.report;
+    o << "  " << std::setw(static_cast<int>(width)) << p.scene << "  " << std::setw(9)
+      << fixed(1.0 / p.settings.timestep, 0) << "  " << std::setw(10) << p.settings.iterations << "  "
+      << std::setw(11) << fixed(r.cost(), 2) << "  " << std::setw(10) << fixed(1e3 * r.worstDrift, 3) << "  "
+      << std::setw(16) << fixed(1e3 * r.worstPenetration, 3) << "  " << std::setw(11) << fixed(1e3 * r.restSpeed, 4)
+      << "  " << (r.energyScale > 0 ? fixed(100.0 * r.energyGain / r.energyScale, 3) + "%" : "0")
+      << (r.complete ? "" : "  diverged: " + r.failure) << "\n";
+  }
+  return o.str();
+}
+
 std::string scaleTable(const std::vector<ScalePoint>& points) {
   std::ostringstream o;
   const Scenario any = CubeField::make(1);
@@ -412,7 +482,7 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
     }
   }
 
-  const bool sweepAsked = options.sweep || (!options.switches && options.scale.empty());
+  const bool sweepAsked = options.sweep || (!options.switches && options.scale.empty() && !options.hard);
   const InterruptGuard interrupt;
   std::vector<BenchPoint> points;
   std::map<std::string, std::vector<std::string>> skipped;  // per scene, a line per mode it cannot run in
@@ -455,6 +525,15 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
   if (!options.scale.empty() && !interrupt.requested()) {
     scalePoints = measureScale(options.scale, options.repeats, interrupt, err);
   }
+  std::vector<HardPoint> hardPoints;
+  if (options.hard && !interrupt.requested()) {
+    try {
+      hardPoints = measureHard((std::filesystem::path(options.scenarioDir) / "hard").string(), interrupt, err);
+    } catch (const ScenarioError& e) {
+      for (const std::string& line : e.lines()) err << line << "\n";
+      return kExitBadInput;
+    }
+  }
 
   if (options.json) {
     nlohmann::json all = nlohmann::json::array();
@@ -474,7 +553,10 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
       scale.push_back({{"cubes", p.cubes}, {"switch", p.name}, {"ms_per_step", p.msPerStep}, {"spread", p.spread},
                        {"difference_m", p.difference}, {"same_state", p.sameState}, {"complete", p.complete}});
     }
-    out << nlohmann::json{{"sweep", all}, {"switches", switches}, {"scale", scale}, {"growth_exponents", exponents(scalePoints)}}
+    nlohmann::json hard = nlohmann::json::array();
+    for (const HardPoint& p : hardPoints) hard.push_back(hardJson(p));
+    out << nlohmann::json{{"sweep", all}, {"switches", switches}, {"scale", scale},
+                          {"growth_exponents", exponents(scalePoints)}, {"hard", hard}}
                .dump(2)
         << "\n";
   } else {
@@ -490,7 +572,11 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
       out << gap << switchTable(switchPoints);
       gap = "\n";
     }
-    if (!scalePoints.empty()) out << gap << scaleTable(scalePoints);
+    if (!scalePoints.empty()) {
+      out << gap << scaleTable(scalePoints);
+      gap = "\n";
+    }
+    if (!hardPoints.empty()) out << gap << hardTable(hardPoints);
   }
   int status = kExitOk;
   if (options.frontFile && sweepAsked && !interrupt.requested()) {
@@ -510,6 +596,7 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
     if (problem.empty() && !scalePoints.empty()) {
       problem = AtomicFile::write((dir / "scale.csv").string(), scaleCsv(scalePoints));
     }
+    if (problem.empty() && !hardPoints.empty()) problem = AtomicFile::write((dir / "hard.csv").string(), hardCsv(hardPoints));
     for (std::size_t i = 0; sweepAsked && problem.empty() && i < scenes.size(); ++i) {
       problem = writeGnuplotFile((dir / ("bench_" + scenes[i].name() + ".png")).string(),
                                  plotScript(points, scenes[i].name()), 900, 640);

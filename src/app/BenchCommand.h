@@ -35,6 +35,7 @@ struct BenchOptions {
   bool sweep = false;
   bool switches = false;
   std::vector<int> scale;
+  bool hard = false;  ///< --hard: run every scene in SCENARIOS/hard once and measure its stability
 };
 
 /// Declares bench's options on `command`.

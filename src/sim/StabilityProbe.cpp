@@ -1,0 +1,96 @@
+#include "sim/StabilityProbe.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <vector>
+
+#include "sim/SceneBuilder.h"
+
+namespace tabletop {
+namespace {
+
+// Kinetic (translational and rotational) plus potential energy above the
+// floor of every entity, J.
+double mechanicalEnergy(const World& world, double gravity) {
+  double e = 0.0;
+  for (const auto& entity : world.entities()) {
+    const btRigidBody& body = *entity->body();
+    if (body.getInvMass() == 0) continue;
+    const double m = 1.0 / body.getInvMass();
+    const btVector3 w = body.getWorldTransform().getBasis().transpose() * body.getAngularVelocity();
+    const btVector3 inv = body.getInvInertiaDiagLocal();
+    double rotational = 0.0;
+    for (int k = 0; k < 3; ++k) {
+      if (inv[k] > 0) rotational += w[k] * w[k] / inv[k];
+    }
+    e += 0.5 * m * body.getLinearVelocity().length2() + 0.5 * rotational +
+         m * gravity * body.getCenterOfMassPosition().y();
+  }
+  return e;
+}
+
+// Whether (x, z) is over the table top.
+bool overTop(const TableSpec& t, double x, double z) {
+  return std::abs(x - t.centreX) <= 0.5 * t.width && std::abs(z - t.centreZ) <= 0.5 * t.depth;
+}
+
+}  // namespace
+
+StabilityReport probeStability(const Scenario& scenario, const Settings& settings, const StepObserver& afterStep) {
+  std::unique_ptr<World> world = buildWorld(scenario, settings);
+  ScriptPlayer player(scenario, settings, *world, afterStep);
+  StabilityReport r;
+
+  std::vector<btVector3> start;
+  for (const auto& e : world->entities()) start.push_back(e->position());
+  const TableSpec& table = world->table().spec();
+  const double restWindow = std::min(1.0, 0.5 * settings.duration);
+
+  const auto watch = [&]() {
+    for (std::size_t i = 0; i < start.size(); ++i) {
+      const btRigidBody& body = *world->entities()[i]->body();
+      const btVector3 centre = body.getCenterOfMassPosition();
+      r.worstDrift = std::max(r.worstDrift, double((centre - start[i]).length()));
+      if (overTop(table, centre.x(), centre.z())) {
+        btVector3 low, high;
+        body.getCollisionShape()->getAabb(body.getWorldTransform(), low, high);
+        r.lowestOverTop = std::min(r.lowestOverTop, low.y() - table.height);
+      }
+      if (world->time() > settings.duration - restWindow) {
+        r.restSpeed = std::max(r.restSpeed, double(body.getLinearVelocity().length()));
+      }
+    }
+    r.worstPenetration = std::max(r.worstPenetration, world->deepestPenetration());
+  };
+
+  double lowest = 0.0;  // the lowest energy since the last push
+  int pushes = -1;
+  try {
+    player.runDue();
+    while (true) {
+      const double e = mechanicalEnergy(*world, settings.gravity);
+      r.energyScale = std::max(r.energyScale, std::abs(e));
+      if (player.pushes() != pushes) {
+        pushes = player.pushes();
+        lowest = e;
+      } else {
+        r.energyGain = std::max(r.energyGain, e - lowest);
+        lowest = std::min(lowest, e);
+      }
+      if (player.finished()) break;
+      const auto before = std::chrono::steady_clock::now();
+      player.step();
+      r.wallSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - before).count();
+      watch();
+    }
+  } catch (const DivergenceError& e) {
+    r.complete = false;
+    r.failure = e.what();
+  }
+  r.steps = world->steps();
+  r.simulated = world->time();
+  return r;
+}
+
+}  // namespace tabletop

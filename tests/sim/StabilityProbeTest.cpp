@@ -1,0 +1,182 @@
+// The hard cases (scenarios/hard/, README "Hard cases"): each scene run in
+// full physics and judged against its stated threshold, in SI units.
+
+#include "sim/StabilityProbe.h"
+
+#include <cmath>
+#include <random>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "physics/World.h"
+#include "scenario/ScenarioLoader.h"
+#include "sim/SceneBuilder.h"
+#include "sim/ScriptRunner.h"
+
+namespace tabletop {
+namespace {
+
+Scenario hard(const std::string& name) {
+  return ScenarioLoader::loadFile(std::string(TABLETOP_SOURCE_DIR) + "/scenarios/hard/" + name + ".json");
+}
+
+// Where the first entity's centre is at the end of a full-physics run.
+Vec3 probeEnd(const Scenario& s, const Settings& settings) {
+  auto sim = buildSimulation(s, settings, SimulationMode::Bullet);
+  return runScript(s, settings, *sim).entities.at(0).position;
+}
+
+Scenario shipped(const std::string& name) {
+  return ScenarioLoader::loadFile(std::string(TABLETOP_SOURCE_DIR) + "/scenarios/" + name + ".json");
+}
+
+// Every step rate a scene may use, from the slowest to the fastest the
+// settings accept (kMaxTimestep, kMinTimestep).
+constexpr double kRates[] = {10, 30, 60, 120, 240, 1000, 10000, 100000};
+
+// A tower of ten 0.1 m cubes stands for 60 s with sleeping off: no cube
+// drifts more than 3 mm from where it started (measured 2.0 mm, all of it
+// in the first second, while the first steps' impulses settle), no
+// contact is deeper than 0.1 mm (measured 0.015 mm), and in the last
+// second nothing moves faster than 0.1 mm/s (measured 0.6 um/s).
+TEST(HardCase, TallStackOfTenStands) {
+  const Scenario s = hard("tall_stack_10");
+  const StabilityReport r = probeStability(s, s.settings);
+  ASSERT_TRUE(r.complete) << r.failure;
+  EXPECT_NEAR(r.simulated, 60.0, 1e-9);
+  EXPECT_LE(r.worstDrift, 3e-3);
+  EXPECT_LE(r.worstPenetration, 1e-4);
+  EXPECT_LE(r.restSpeed, 1e-4);
+}
+
+// A pyramid of 55 cubes ten wide stands for 60 s: no cube drifts more
+// than 5 mm (measured 2.1 mm) and in the last second nothing moves faster
+// than 0.1 mm/s (measured 0.16 um/s).
+TEST(HardCase, PyramidStands) {
+  const Scenario s = hard("pyramid_55");
+  const StabilityReport r = probeStability(s, s.settings);
+  ASSERT_TRUE(r.complete) << r.failure;
+  EXPECT_NEAR(r.simulated, 60.0, 1e-9);
+  EXPECT_LE(r.worstDrift, 5e-3);
+  EXPECT_LE(r.restSpeed, 1e-4);
+}
+
+// A 1 cm sphere thrown down at 30 m/s never passes through the 4 cm top at
+// any step the settings allow: its bottom never goes deeper into the top
+// than its own diameter, and it ends resting on the top.
+TEST(HardCase, FastSmallSphereNeverPassesThroughTheTop) {
+  const Scenario s = hard("fast_small_sphere");
+  for (double rate : kRates) {
+    Settings settings = s.settings;
+    settings.timestep = 1.0 / rate;
+    const StabilityReport r = probeStability(s, settings);
+    ASSERT_TRUE(r.complete) << rate << " Hz: " << r.failure;
+    // Measured: 2.5 mm at 10-240 Hz (the swept sphere of half the radius
+    // stops it), 6.1 mm at 1000 Hz, 0.07 mm at 10 kHz and above.
+    EXPECT_GE(r.lowestOverTop, -0.01) << rate << " Hz";
+    const Vec3 end = probeEnd(s, settings);
+    // Split impulse takes out 20% of the penetration a step: at 10 Hz 1 mm
+    // is left at the end (0.5 s).
+    EXPECT_NEAR(end.y, s.table.height + 0.005, 0.0025) << rate << " Hz: it ends on the top";
+  }
+}
+
+// A 5 m cube on the floor rests at its true height, 2.5 m, within 1% of
+// its size (measured 2.6 um: its collision margin is scaled to it, 4 cm
+// rather than a fixed share of its size). The 5 mm cube does not yet: see
+// the README's "Hard cases".
+TEST(HardCase, HugeCubeRestsAtItsHeightOnTheFloor) {
+  const Scenario s = hard("huge_cube");
+  const StabilityReport r = probeStability(s, s.settings);
+  ASSERT_TRUE(r.complete) << r.failure;
+  EXPECT_LE(r.worstDrift, 0.01 * 5.0);
+  EXPECT_NEAR(probeEnd(s, s.settings).y, 2.5, 0.01 * 5.0);
+}
+
+// Report example 1 with the table and the cube moved 1000 m along X runs
+// as it does at the origin, to 1 nm over its three pushes on the table
+// (measured 2e-12 m: double precision's spacing at 1000 m is 1.1e-13 m;
+// float's, 61 um, would be the whole tolerance of a fine scene). Once the
+// cube has fallen and tumbled on the floor the two runs are 3 cm apart
+// (README, "Hard cases").
+TEST(HardCase, FarTableBehavesAsAtTheOrigin) {
+  Scenario near = shipped("example1_single_cube");
+  Scenario far = near;
+  constexpr double kAway = 1000.0;
+  far.table.centreX += kAway;
+  for (EntitySpec& e : far.entities) e.position.x += kAway;
+  Settings settings = near.settings;
+  settings.duration = 1.0;  // three pushes, on the table throughout
+  double worst = 0.0;
+  auto a = buildSimulation(near, settings, SimulationMode::Bullet);
+  auto b = buildSimulation(far, settings, SimulationMode::Bullet);
+  ScriptPlayer pa(near, settings, *a), pb(far, settings, *b);
+  pa.runDue();
+  pb.runDue();
+  while (!pa.finished()) {
+    pa.step();
+    pb.step();
+    const auto ma = a->motions(), mb = b->motions();
+    for (std::size_t i = 0; i < ma.size(); ++i) {
+      worst = std::max(worst, (mb[i].position - ma[i].position - Vec3{kAway, 0, 0}).length());
+    }
+  }
+  ASSERT_TRUE(pb.finished());
+  EXPECT_LE(worst, 1e-9);
+}
+
+// The report's examples at 1/30 s do not explode: every run completes
+// within the divergence guard's energy bounds, and the mechanical energy
+// never rises by more than 2% of the scene's without a push. It does rise,
+// by penetration recovery lifting bodies that sank up to 6 cm into what
+// they landed on in a step (measured 2.6% in example 1, 1.4% in example 3,
+// 0.7% in example 4, 5e-7 in example 2): README, "Hard cases".
+TEST(HardCase, ReportExamplesAtThirtyHertz) {
+  const struct {
+    const char* name;
+    double share;
+  } cases[] = {{"example1_single_cube", 0.03}, {"example2_two_cubes", 1e-6},
+               {"example3_stacked_cubes", 0.02}, {"example4_two_spheres", 0.01}};
+  for (const auto& c : cases) {
+    const Scenario s = shipped(c.name);
+    Settings settings = s.settings;
+    settings.timestep = 1.0 / 30.0;
+    const StabilityReport r = probeStability(s, settings);
+    EXPECT_TRUE(r.complete) << c.name << ": " << r.failure;
+    EXPECT_LE(r.energyGain, c.share * r.energyScale) << c.name;
+  }
+}
+
+// A box spinning about its intermediate axis in free flight keeps its
+// angular momentum L = R I R^T w and its kinetic energy w.I w / 2 over
+// 10 s at 240 Hz with Bullet's implicit gyroscopic term (its default):
+// L within 2% (measured 1.5%), the energy within 3% (measured 2.7%,
+// always a loss: the implicit step damps).
+TEST(HardCase, FreeRotationKeepsMomentumAndEnergy) {
+  const Scenario s = hard("free_rotation");
+  btVector3 start(0, 0, 0);
+  double startEnergy = -1.0, worstMomentum = 0.0, worstEnergy = 0.0;
+  const StabilityReport r = probeStability(s, s.settings, [&](const Simulation& sim) {
+    const btRigidBody& body = *dynamic_cast<const World&>(sim).entities()[0]->body();
+    const btMatrix3x3& basis = body.getWorldTransform().getBasis();
+    const btVector3 inv = body.getInvInertiaDiagLocal();
+    const btVector3 w = basis.transpose() * body.getAngularVelocity();
+    const btVector3 local(w.x() / inv.x(), w.y() / inv.y(), w.z() / inv.z());
+    const btVector3 momentum = basis * local;
+    const double energy = 0.5 * w.dot(local);
+    if (startEnergy < 0) {
+      startEnergy = energy;
+      start = momentum;
+    }
+    worstMomentum = std::max(worstMomentum, double((momentum - start).length() / start.length()));
+    worstEnergy = std::max(worstEnergy, std::abs(energy - startEnergy) / startEnergy);
+  });
+  ASSERT_TRUE(r.complete) << r.failure;
+  EXPECT_LE(worstMomentum, 0.02);
+  EXPECT_LE(worstEnergy, 0.03);
+  EXPECT_LE(r.energyGain, 1e-12);
+}
+
+}  // namespace
+}  // namespace tabletop
