@@ -4,12 +4,12 @@
 #include "sim/StabilityProbe.h"
 
 #include <cmath>
-#include <random>
 #include <string>
 
 #include <gtest/gtest.h>
 
 #include "physics/World.h"
+#include "scenario/ScenarioError.h"
 #include "scenario/ScenarioLoader.h"
 #include "sim/SceneBuilder.h"
 #include "sim/ScriptRunner.h"
@@ -176,6 +176,20 @@ TEST(HardCase, FreeRotationKeepsMomentumAndEnergy) {
   EXPECT_LE(worstMomentum, 0.02);
   EXPECT_LE(worstEnergy, 0.03);
   EXPECT_LE(r.energyGain, 1e-12);
+}
+
+// A starting velocity is full physics only: the report's rules start every
+// entity at rest, so the other modes refuse the scene, naming the field.
+TEST(HardCase, StartingMotionIsFullPhysicsOnly) {
+  const Scenario s = hard("fast_small_sphere");
+  for (SimulationMode mode : {SimulationMode::Compat, SimulationMode::Rules}) {
+    try {
+      buildSimulation(s, s.settings, mode);
+      ADD_FAILURE() << toString(mode) << " accepted a starting velocity";
+    } catch (const ScenarioError& e) {
+      EXPECT_NE(std::string(e.what()).find("/entities/0/velocity"), std::string::npos) << e.what();
+    }
+  }
 }
 
 }  // namespace
