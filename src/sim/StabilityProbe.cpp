@@ -30,11 +30,6 @@ double mechanicalEnergy(const World& world, double gravity) {
   return e;
 }
 
-// Whether (x, z) is over the table top.
-bool overTop(const TableSpec& t, double x, double z) {
-  return std::abs(x - t.centreX) <= 0.5 * t.width && std::abs(z - t.centreZ) <= 0.5 * t.depth;
-}
-
 }  // namespace
 
 StabilityReport probeStability(const Scenario& scenario, const Settings& settings, const StepObserver& afterStep) {
@@ -44,7 +39,7 @@ StabilityReport probeStability(const Scenario& scenario, const Settings& setting
 
   std::vector<btVector3> start;
   for (const auto& e : world->entities()) start.push_back(e->position());
-  const TableSpec& table = world->table().spec();
+  const Table& table = world->table();
   const double restWindow = std::min(1.0, 0.5 * settings.duration);
 
   const auto watch = [&]() {
@@ -52,10 +47,11 @@ StabilityReport probeStability(const Scenario& scenario, const Settings& setting
       const btRigidBody& body = *world->entities()[i]->body();
       const btVector3 centre = body.getCenterOfMassPosition();
       r.worstDrift = std::max(r.worstDrift, double((centre - start[i]).length()));
-      if (overTop(table, centre.x(), centre.z())) {
+      // Over the top: the report's drop test (3.4) still says OnTable.
+      if (table.statusAt(centre.x(), centre.z()) == EntityPositionStatus::OnTable) {
         btVector3 low, high;
         body.getCollisionShape()->getAabb(body.getWorldTransform(), low, high);
-        r.lowestOverTop = std::min(r.lowestOverTop, low.y() - table.height);
+        r.lowestOverTop = std::min(r.lowestOverTop, low.y() - table.topHeight());
       }
       if (world->time() > settings.duration - restWindow) {
         r.restSpeed = std::max(r.restSpeed, double(body.getLinearVelocity().length()));
