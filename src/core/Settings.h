@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/Broadphase.h"
+#include "core/Gyroscopic.h"
 #include "core/Integrator.h"
 
 namespace tabletop {
@@ -31,6 +32,9 @@ struct Settings {
   /// velocities by less than this, m/s (root of the summed squares over
   /// all rows); 0 runs every iteration. With it, `iterations` is a cap.
   double solverTolerance = 0.0;
+  /// How a spinning body's gyroscopic term enters (Bullet's default, the
+  /// implicit step in body axes; README, "Hard cases", compares them).
+  Gyroscopic gyroscopic = Gyroscopic::ImplicitBody;
 
   // What the collision world models (full physics; README, "Modelling
   // only what a scene needs", has what each saves and costs).

@@ -38,6 +38,20 @@ btQuaternion yawRotation(double degrees) {
 // paired correctly, only less finely.
 constexpr int kSweepHandles = 1 << 16;
 
+// Bullet's rigid-body flags for the gyroscopic term (Settings::gyroscopic).
+constexpr int kGyroscopicFlags = BT_ENABLE_GYROSCOPIC_FORCE_EXPLICIT | BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_WORLD |
+                                 BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY;
+
+int gyroscopicFlag(Gyroscopic g) {
+  switch (g) {
+    case Gyroscopic::None: return 0;
+    case Gyroscopic::Explicit: return BT_ENABLE_GYROSCOPIC_FORCE_EXPLICIT;
+    case Gyroscopic::ImplicitWorld: return BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_WORLD;
+    case Gyroscopic::ImplicitBody: return BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY;
+  }
+  return BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY;
+}
+
 std::unique_ptr<btBroadphaseInterface> makeBroadphase(Broadphase kind, const TableSpec& table) {
   switch (kind) {
     case Broadphase::Dbvt: break;
@@ -175,6 +189,7 @@ Shape& World::addEntity(std::unique_ptr<Shape> shape, double mass, const Materia
   const double inner = std::min({half.x(), half.y(), half.z()});
   body->setCcdMotionThreshold(inner);
   body->setCcdSweptSphereRadius(0.5 * inner);
+  body->setFlags((body->getFlags() & ~kGyroscopicFlags) | gyroscopicFlag(settings_.gyroscopic));
   if (!settings_.sleeping) body->setActivationState(DISABLE_DEACTIVATION);
   world_->addRigidBody(body);
   indexOf_.emplace(shape->name(), entities_.size());

@@ -271,6 +271,7 @@ Settings readSettings(const json& j, std::vector<Problem>& problems) {
   choice(f, "integrator", kAllIntegrators, s.integrator);
   s.warmStart = f.number("warm_start", kUnitInterval, s.warmStart);
   s.solverTolerance = f.number("solver_tolerance", kSpeedTolerance, s.solverTolerance);
+  choice(f, "gyroscopic", kAllGyroscopics, s.gyroscopic);
   choice(f, "broadphase", kAllBroadphases, s.broadphase);
   s.legsWhenReachable = f.boolean("legs_when_reachable", s.legsWhenReachable);
   s.floorPairsNearFloor = f.boolean("floor_pairs_near_floor", s.floorPairsNearFloor);

@@ -148,16 +148,49 @@ TEST(HardCase, ReportExamplesAtThirtyHertz) {
   }
 }
 
-// A box spinning about its intermediate axis in free flight keeps its
-// angular momentum L = R I R^T w and its kinetic energy w.I w / 2 over
-// 10 s at 240 Hz with Bullet's implicit gyroscopic term (its default):
-// L within 2% (measured 1.5%), the energy within 3% (measured 2.7%,
-// always a loss: the implicit step damps).
-TEST(HardCase, FreeRotationKeepsMomentumAndEnergy) {
-  const Scenario s = hard("free_rotation");
-  btVector3 start(0, 0, 0);
-  double startEnergy = -1.0, worstMomentum = 0.0, worstEnergy = 0.0;
-  const StabilityReport r = probeStability(s, s.settings, [&](const Simulation& sim) {
+// Torque-free rotation of the tumbler (free_rotation: a solid box, unturned
+// at the start, so its spin in its own axes is the scene's) by Euler's
+// equations in body axes,
+//   I1 w1' = (I2 - I3) w2 w3 (and cyclically), I1 = m (b^2 + c^2) / 12,
+// integrated by classical Runge-Kutta at 10 us (its error in the time
+// found is below 1e-9 s): when the spin about the intermediate axis (local
+// Y) first changes sign, the middle of the first flip.
+double referenceFlipTime(const EntitySpec& box) {
+  const double a = box.size.at(0), b = box.size.at(1), c = box.size.at(2);
+  const btVector3 I = (box.mass / 12.0) * btVector3(b * b + c * c, a * a + c * c, a * a + b * b);
+  const auto rate = [&](const btVector3& w) {
+    return btVector3((I.y() - I.z()) * w.y() * w.z() / I.x(), (I.z() - I.x()) * w.z() * w.x() / I.y(),
+                     (I.x() - I.y()) * w.x() * w.y() / I.z());
+  };
+  const double h = 1e-5;
+  btVector3 w(box.spin.x, box.spin.y, box.spin.z);
+  for (long i = 0; i < 10'000'000; ++i) {
+    const btVector3 k1 = rate(w), k2 = rate(w + 0.5 * h * k1), k3 = rate(w + 0.5 * h * k2), k4 = rate(w + h * k3);
+    const btVector3 next = w + (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+    if (next.y() < 0.0) return h * (i + w.y() / (w.y() - next.y()));
+    w = next;
+  }
+  return -1.0;
+}
+
+// One run of the tumbler with a gyroscopic option: the worst relative
+// errors of its angular momentum L = R I R^T w and kinetic energy
+// w.I w / 2 over its 10 s, when its intermediate-axis spin first changed
+// sign (-1 if never, interpolated within the step), and the probe's report.
+struct Tumble {
+  double momentum = 0.0;
+  double energy = 0.0;
+  double flipTime = -1.0;
+  StabilityReport report;
+};
+
+Tumble tumble(const Scenario& scene, Gyroscopic gyroscopic) {
+  Settings settings = scene.settings;
+  settings.gyroscopic = gyroscopic;
+  Tumble t;
+  btVector3 startMomentum(0, 0, 0), lastSpin(0, 0, 0);
+  double startEnergy = -1.0;
+  t.report = probeStability(scene, settings, [&](const Simulation& sim) {
     const btRigidBody& body = *dynamic_cast<const World&>(sim).entities()[0]->body();
     const btMatrix3x3& basis = body.getWorldTransform().getBasis();
     const btVector3 inv = body.getInvInertiaDiagLocal();
@@ -167,15 +200,48 @@ TEST(HardCase, FreeRotationKeepsMomentumAndEnergy) {
     const double energy = 0.5 * w.dot(local);
     if (startEnergy < 0) {
       startEnergy = energy;
-      start = momentum;
+      startMomentum = momentum;
+    } else if (t.flipTime < 0 && w.y() < 0.0) {
+      t.flipTime = sim.time() - settings.timestep * w.y() / (w.y() - lastSpin.y());
     }
-    worstMomentum = std::max(worstMomentum, double((momentum - start).length() / start.length()));
-    worstEnergy = std::max(worstEnergy, std::abs(energy - startEnergy) / startEnergy);
+    lastSpin = w;
+    t.momentum = std::max(t.momentum, double((momentum - startMomentum).length() / startMomentum.length()));
+    t.energy = std::max(t.energy, std::abs(energy - startEnergy) / startEnergy);
   });
-  ASSERT_TRUE(r.complete) << r.failure;
-  EXPECT_LE(worstMomentum, 0.02);
-  EXPECT_LE(worstEnergy, 0.03);
-  EXPECT_LE(r.energyGain, 1e-12);
+  return t;
+}
+
+// A box spinning at 5 rad/s about its intermediate axis in free flight
+// flips over at 3.684 s (Euler's equations, above) and keeps its angular
+// momentum and kinetic energy. Bullet's gyroscopic options at 240 Hz over
+// 10 s, each with its measured figures:
+//  - implicit in body axes (the default) and implicit in world axes (the
+//    same figures here): the flip within 1% of its time (measured 0.4%
+//    early), L within 2% (1.5%), the energy within 3% (2.7%, always a loss:
+//    the implicit step damps, so never a gain);
+//  - explicit: the flip within 1% (0.4% late), L within 2% (1.4%); the
+//    energy rises, by at most 3% of it (measured 2.6%);
+//  - none: the spin stays fixed in space and the box never flips (L 0.2%
+//    and the energy exact, only because nothing happens).
+TEST(HardCase, FreeRotationKeepsMomentumAndEnergy) {
+  const Scenario scene = hard("free_rotation");
+  const double flip = referenceFlipTime(scene.entities.at(0));
+  ASSERT_NEAR(flip, 3.684, 0.001);
+  for (Gyroscopic g : {Gyroscopic::ImplicitBody, Gyroscopic::ImplicitWorld}) {
+    SCOPED_TRACE(toString(g));
+    const Tumble t = tumble(scene, g);
+    ASSERT_TRUE(t.report.complete) << t.report.failure;
+    EXPECT_NEAR(t.flipTime, flip, 0.01 * flip);
+    EXPECT_LE(t.momentum, 0.02);
+    EXPECT_LE(t.energy, 0.03);
+    EXPECT_LE(t.report.energyGain, 1e-12);
+  }
+  const Tumble explicitTerm = tumble(scene, Gyroscopic::Explicit);
+  EXPECT_NEAR(explicitTerm.flipTime, flip, 0.01 * flip);
+  EXPECT_LE(explicitTerm.momentum, 0.02);
+  EXPECT_GT(explicitTerm.report.energyGain, 0.0);
+  EXPECT_LE(explicitTerm.report.energyGain, 0.03 * explicitTerm.report.energyScale);
+  EXPECT_EQ(tumble(scene, Gyroscopic::None).flipTime, -1.0);
 }
 
 // A starting velocity is full physics only: the report's rules start every
