@@ -1,6 +1,7 @@
 #pragma once
 
 #include "core/Broadphase.h"
+#include "core/ContactSolver.h"
 #include "core/Gyroscopic.h"
 #include "core/Integrator.h"
 
@@ -19,6 +20,9 @@ inline constexpr double kMaxSteps = 1e7;
 struct Settings {
   double timestep = 1.0 / 240.0;  ///< fixed step, seconds
   int iterations = 10;            ///< constraint solver iterations per step
+  /// How contact impulses are found: sequential impulses (`iterations`
+  /// sweeps) or each island solved exactly (README, "Hard cases").
+  ContactSolver solver = ContactSolver::SequentialImpulse;
   double duration = 10.0;         ///< longest simulated time, seconds
   double gravity = 9.81;          ///< m/s^2, acting along -Y
   bool endAtRest = true;          ///< stop once the script is done and all is at rest

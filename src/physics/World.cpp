@@ -6,6 +6,7 @@
 
 #include "core/Angle.h"
 #include "physics/ContactMaterial.h"
+#include "physics/IslandSolver.h"
 #include "physics/StepPush.h"
 
 namespace tabletop {
@@ -75,7 +76,9 @@ World::World(const Settings& settings, const TableSpec& table, const Material& g
       configuration_(std::make_unique<btDefaultCollisionConfiguration>()),
       dispatcher_(std::make_unique<btCollisionDispatcher>(configuration_.get())),
       broadphase_(makeBroadphase(settings.broadphase, table)),
-      solver_(std::make_unique<btSequentialImpulseConstraintSolver>()),
+      solver_(settings.solver == ContactSolver::Dantzig
+                  ? std::make_unique<IslandSolver>(kDirectRowLimit)
+                  : std::make_unique<btSequentialImpulseConstraintSolver>()),
       world_(std::make_unique<DynamicsWorld>(dispatcher_.get(), broadphase_.get(),
                                                        solver_.get(), configuration_.get())),
       table_(table, settings.legsWhenReachable),
@@ -106,6 +109,16 @@ World::World(const Settings& settings, const TableSpec& table, const Material& g
   updateSmoothAcceleration();
   btContactSolverInfo& solver = world_->getSolverInfo();
   solver.m_numIterations = settings.iterations;
+  if (settings.solver == ContactSolver::Dantzig) {
+    // One island at a time, so each is solved alone and the row limit
+    // applies to it; and a compliance of 1e-8 on every contact row (Bullet's
+    // global CFM), without which the four points of a face resting on a
+    // face, which are redundant, leave the pivoting a singular matrix (it
+    // failed on every step of a 100:1 stack). Measured on that stack at
+    // 240 Hz: 1e-8 lets it sink by nothing measurable; 1e-6 by 0.25 mm/s.
+    solver.m_minimumSolverBatchSize = 1;
+    solver.m_globalCfm = 1e-8;
+  }
   // Split impulse for every penetration, not only those deeper than 4 cm:
   // pushing bodies apart then never leaves velocity behind, so a body
   // resting on the table does not bounce off it at the first step.

@@ -264,6 +264,7 @@ Settings readSettings(const json& j, std::vector<Problem>& problems) {
       s.iterations = it->get<int>();
     }
   }
+  choice(f, "solver", kAllContactSolvers, s.solver);
   s.duration = f.number("duration", kSpan, s.duration);
   s.gravity = f.number("gravity", kGravity, s.gravity);
   s.endAtRest = f.boolean("end_at_rest", s.endAtRest);

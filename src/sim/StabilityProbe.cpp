@@ -47,10 +47,12 @@ StabilityReport probeStability(const Scenario& scenario, const Settings& setting
       const btRigidBody& body = *world->entities()[i]->body();
       const btVector3 centre = body.getCenterOfMassPosition();
       r.worstDrift = std::max(r.worstDrift, double((centre - start[i]).length()));
+      r.farthest = std::max(r.farthest, std::hypot(centre.x() - table.spec().centreX, centre.z() - table.spec().centreZ));
+      btVector3 low, high;
+      body.getCollisionShape()->getAabb(body.getWorldTransform(), low, high);
+      r.lowestOverFloor = std::min(r.lowestOverFloor, double(low.y()));
       // Over the top: the report's drop test (3.4) still says OnTable.
       if (table.statusAt(centre.x(), centre.z()) == EntityPositionStatus::OnTable) {
-        btVector3 low, high;
-        body.getCollisionShape()->getAabb(body.getWorldTransform(), low, high);
         r.lowestOverTop = std::min(r.lowestOverTop, low.y() - table.topHeight());
       }
       if (world->time() > settings.duration - restWindow) {
@@ -61,6 +63,7 @@ StabilityReport probeStability(const Scenario& scenario, const Settings& setting
   };
 
   double lowest = 0.0;  // the lowest energy since the last push
+  double given = 0.0;   // the energy just after the last push
   int pushes = -1;
   try {
     player.runDue();
@@ -70,8 +73,10 @@ StabilityReport probeStability(const Scenario& scenario, const Settings& setting
       if (player.pushes() != pushes) {
         pushes = player.pushes();
         lowest = e;
+        given = e;
       } else {
         r.energyGain = std::max(r.energyGain, e - lowest);
+        r.energyExcess = std::max(r.energyExcess, e - given);
         lowest = std::min(lowest, e);
       }
       if (player.finished()) break;

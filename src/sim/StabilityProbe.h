@@ -18,10 +18,18 @@ struct StabilityReport {
   /// J: the largest rise of the mechanical energy (kinetic, rotational and
   /// potential above the floor) over its lowest value since the last push.
   double energyGain = 0.0;
+  /// J: the largest excess of the mechanical energy over its value just
+  /// after the last push (or at the start): energy the scene was never given.
+  double energyExcess = 0.0;
   double energyScale = 0.0;  ///< J: the largest mechanical energy seen, for relative gains
   /// m: the lowest any entity's bottom came relative to the table top while
   /// its centre was over the top (negative: below it); +inf if none was.
   double lowestOverTop = std::numeric_limits<double>::infinity();
+  /// m: the lowest any entity's bottom came relative to the floor (y = 0).
+  double lowestOverFloor = std::numeric_limits<double>::infinity();
+  /// m: the farthest any entity's centre got from the table's centre,
+  /// measured along the floor.
+  double farthest = 0.0;
   bool complete = true;   ///< false if the divergence guard stopped the run
   std::string failure;    ///< the guard's message when not complete
   long steps = 0;

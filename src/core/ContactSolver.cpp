@@ -1,0 +1,19 @@
+#include "core/ContactSolver.h"
+
+#include "core/EnumNames.h"
+
+namespace tabletop {
+
+std::string_view toString(ContactSolver s) {
+  switch (s) {
+    case ContactSolver::SequentialImpulse: return "sequential_impulse";
+    case ContactSolver::Dantzig: return "dantzig";
+  }
+  return "sequential_impulse";
+}
+
+std::optional<ContactSolver> contactSolverFromString(std::string_view name) {
+  return enumFromName(name, kAllContactSolvers);
+}
+
+}  // namespace tabletop

@@ -1,0 +1,32 @@
+#pragma once
+
+#include <optional>
+#include <string_view>
+
+namespace tabletop {
+
+/// How the contact impulses of each step are found (full physics):
+///  - SequentialImpulse: Bullet's projected Gauss-Seidel, `iterations`
+///    sweeps over the contact rows. Cheap per row, but a heavy body on a
+///    light one, or a tall stack, needs far more sweeps than it gets.
+///  - Dantzig: Bullet's MLCP solver with Dantzig's pivoting method, each
+///    island of touching bodies solved exactly as one linear
+///    complementarity problem; an island of more than
+///    kDirectRowLimit rows, or one the pivoting cannot solve, is left to
+///    sequential impulses.
+enum class ContactSolver { SequentialImpulse, Dantzig };
+
+/// The largest island (normal and friction rows together) the Dantzig
+/// solver takes on: its cost grows as the cube of the rows (README, "Hard
+/// cases").
+inline constexpr int kDirectRowLimit = 300;
+
+/// The scenario and command-line name ("sequential_impulse", "dantzig").
+std::string_view toString(ContactSolver s);
+
+/// Parses a name; nullopt if it is not one.
+std::optional<ContactSolver> contactSolverFromString(std::string_view name);
+
+inline constexpr ContactSolver kAllContactSolvers[] = {ContactSolver::SequentialImpulse, ContactSolver::Dantzig};
+
+}  // namespace tabletop
