@@ -30,6 +30,15 @@ double mechanicalEnergy(const World& world, double gravity) {
   return e;
 }
 
+// Height of the body's lowest point: where its collision surface (a convex
+// shape for every entity) reaches furthest down, m.
+double lowestPoint(const btRigidBody& body) {
+  const auto& shape = static_cast<const btConvexShape&>(*body.getCollisionShape());
+  const btTransform& pose = body.getWorldTransform();
+  const btVector3 down = pose.getBasis().transpose() * btVector3(0, -1, 0);
+  return (pose * shape.localGetSupportingVertex(down)).y();
+}
+
 }  // namespace
 
 StabilityReport probeStability(const Scenario& scenario, const Settings& settings, const StepObserver& afterStep) {
@@ -48,12 +57,11 @@ StabilityReport probeStability(const Scenario& scenario, const Settings& setting
       const btVector3 centre = body.getCenterOfMassPosition();
       r.worstDrift = std::max(r.worstDrift, double((centre - start[i]).length()));
       r.farthest = std::max(r.farthest, std::hypot(centre.x() - table.spec().centreX, centre.z() - table.spec().centreZ));
-      btVector3 low, high;
-      body.getCollisionShape()->getAabb(body.getWorldTransform(), low, high);
-      r.lowestOverFloor = std::min(r.lowestOverFloor, double(low.y()));
+      const double low = lowestPoint(body);
+      r.lowestOverFloor = std::min(r.lowestOverFloor, low);
       // Over the top: the report's drop test (3.4) still says OnTable.
       if (table.statusAt(centre.x(), centre.z()) == EntityPositionStatus::OnTable) {
-        r.lowestOverTop = std::min(r.lowestOverTop, low.y() - table.topHeight());
+        r.lowestOverTop = std::min(r.lowestOverTop, low - table.topHeight());
       }
       if (world->time() > settings.duration - restWindow) {
         r.restSpeed = std::max(r.restSpeed, double(body.getLinearVelocity().length()));

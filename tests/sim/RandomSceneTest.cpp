@@ -1,0 +1,123 @@
+// Hard case 9, randomised robustness: 10,000 seeded random scenes of two to
+// five bodies, each pushed one to four times, run in full physics at the
+// default settings. SI units.
+
+#include "sim/RandomScene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "physics/World.h"
+#include "sim/SceneBuilder.h"
+#include "sim/StabilityProbe.h"
+
+namespace tabletop {
+namespace {
+
+// The same seed gives the same scene; the next seed another. Every scene
+// has two to five bodies and one to four pushes, and builds (no body
+// overlaps another at the start).
+TEST(RandomScene, IsDrawnFromItsSeedAlone) {
+  for (std::uint64_t seed = 0; seed < 200; ++seed) {
+    const Scenario a = RandomScene::make(seed), b = RandomScene::make(seed);
+    ASSERT_EQ(a.entities.size(), b.entities.size());
+    for (std::size_t i = 0; i < a.entities.size(); ++i) {
+      EXPECT_EQ(a.entities[i].size, b.entities[i].size);
+      EXPECT_EQ(a.entities[i].mass, b.entities[i].mass);
+      EXPECT_EQ(a.entities[i].on, b.entities[i].on);
+    }
+    EXPECT_GE(a.entities.size(), 2u) << seed;
+    EXPECT_LE(a.entities.size(), 5u) << seed;
+    EXPECT_GE(a.script.size(), 1u) << seed;
+    EXPECT_LE(a.script.size(), 4u) << seed;
+    EXPECT_NO_THROW(buildWorld(a, a.settings)) << seed;
+    EXPECT_NE(RandomScene::make(seed + 1).entities.at(0).mass, a.entities.at(0).mass) << seed;
+  }
+}
+
+// The first scene as drawn by std::mt19937_64, whose sequence the C++
+// standard fixes: a change to the drawing shows here before it silently
+// changes all 10,000 scenes.
+TEST(RandomScene, FirstSceneIsPinned) {
+  const Scenario s = RandomScene::make(0);
+  std::ostringstream text;
+  text.precision(6);
+  for (const EntitySpec& e : s.entities) {
+    text << e.name << ' ' << static_cast<int>(e.shape) << ' ' << e.size.at(0) << ' ' << e.mass << ' ' << e.on << '\n';
+  }
+  for (const Action& a : s.script) text << a.arrow.entity << ' ' << *a.at << ' ' << a.magnitude.value << '\n';
+  EXPECT_EQ(text.str(),
+            "b0 3 0.0135612 0.0650563 table\n"  // a cone on the table
+            "b1 1 0.081117 1.22973 b0\n"        // a sphere on it
+            "b2 3 0.093591 0.44803 table\n"
+            "b3 2 0.0952175 0.0850838 table\n"  // a box
+            "b1 0.0696068 1.8002\n");          // one push, at 0.07 s
+
+}
+
+// One shard of the 10,000 runs. Each must:
+//  - finish (the divergence guard finds every state finite and within
+//    what the scene's energy allows);
+//  - keep every body in the world: never wholly under the floor (its
+//    highest point below it: it has passed through), and never further
+//    from the table's centre than the table's half-diagonal plus the
+//    distance the fastest speed its energy allows, sqrt(2 E_max / m_min),
+//    covers in the run. Bodies do sink into the floor where they land
+//    fast: 2.8 cm at most, and a 2.3 cm thin cone landing on its rim
+//    at 4 m/s spinning at 56 rad/s (seed 5049) had its centre 3.3 mm
+//    under the floor for two steps before it came back out;
+//  - never hold more mechanical energy than it was last given, beyond
+//    0.5% of the largest energy seen (measured: 0.26% at most, seed 3531):
+//    the discrete contacts' penetration, taken out by split impulse,
+//    lifts bodies a little;
+//  - never gain more than 5% over its lowest energy since the last push
+//    (measured 2.7% at most, seed 6597): the same lift counted from the
+//    moment a body had sunk deepest into what it landed on.
+// Failing seeds are listed in the failure message.
+class RandomRuns : public testing::TestWithParam<int> {};
+
+constexpr int kShards = 10;
+constexpr int kRunsPerShard = 1000;
+
+TEST_P(RandomRuns, StayFiniteInTheWorldAndGainNoEnergy) {
+  std::vector<std::string> failures;
+  for (int k = 0; k < kRunsPerShard; ++k) {
+    const std::uint64_t seed = static_cast<std::uint64_t>(GetParam()) * kRunsPerShard + k;
+    const Scenario s = RandomScene::make(seed);
+    double below = 0.0;  // the lowest any body's highest point came, m
+    const StabilityReport r = probeStability(s, s.settings, [&](const Simulation& sim) {
+      for (const auto& e : dynamic_cast<const World&>(sim).entities()) {
+        const btRigidBody& body = *e->body();
+        const btTransform& pose = body.getWorldTransform();
+        const btVector3 up = pose.getBasis().transpose() * btVector3(0, 1, 0);
+        const auto& shape = static_cast<const btConvexShape&>(*body.getCollisionShape());
+        below = std::min(below, double((pose * shape.localGetSupportingVertex(up)).y()));
+      }
+    });
+    double lightest = s.entities.at(0).mass;
+    for (const EntitySpec& e : s.entities) lightest = std::min(lightest, e.mass);
+    const double reach = std::hypot(0.5 * s.table.width, 0.5 * s.table.depth) +
+                         std::sqrt(2.0 * r.energyScale / lightest) * r.simulated;
+    std::string why;
+    if (!r.complete) why = r.failure;
+    else if (below < 0.0) why = "a body went wholly under the floor, " + std::to_string(-below) + " m";
+    else if (r.farthest > reach) why = "a body got " + std::to_string(r.farthest) + " m out";
+    else if (r.energyExcess > 0.005 * r.energyScale) why = "energy excess " + std::to_string(r.energyExcess) + " J";
+    else if (r.energyGain > 0.05 * r.energyScale) why = "energy gain " + std::to_string(r.energyGain) + " J";
+    if (!why.empty()) failures.push_back("seed " + std::to_string(seed) + ": " + why);
+  }
+  std::string all;
+  for (const std::string& f : failures) all += "\n  " + f;
+  EXPECT_TRUE(failures.empty()) << failures.size() << " of " << kRunsPerShard << " runs failed:" << all;
+}
+
+INSTANTIATE_TEST_SUITE_P(TenThousand, RandomRuns, testing::Range(0, kShards));
+
+}  // namespace
+}  // namespace tabletop
