@@ -15,11 +15,9 @@ btScalar IslandSolver::solveGroupCacheFriendlySetup(btCollisionObject** bodies, 
   for (int m = 0; m < numManifolds; ++m) rows += 3L * manifolds[m]->getNumContacts();
   directNow_ = numConstraints == 0 && rows <= rowLimit_;
   if (directNow_) {
-    ++direct_;
     return btMLCPSolver::solveGroupCacheFriendlySetup(bodies, numBodies, manifolds, numManifolds, constraints,
                                                       numConstraints, info, debugDrawer);
   }
-  ++iterative_;
   return btSequentialImpulseConstraintSolver::solveGroupCacheFriendlySetup(
       bodies, numBodies, manifolds, numManifolds, constraints, numConstraints, info, debugDrawer);
 }

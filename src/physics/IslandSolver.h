@@ -19,10 +19,6 @@ class IslandSolver : public btMLCPSolver {
  public:
   explicit IslandSolver(int rowLimit);
 
-  /// Islands solved directly and by sequential impulses so far.
-  long directIslands() const { return direct_; }
-  long iterativeIslands() const { return iterative_; }
-
  protected:
   btScalar solveGroupCacheFriendlySetup(btCollisionObject** bodies, int numBodies, btPersistentManifold** manifolds,
                                         int numManifolds, btTypedConstraint** constraints, int numConstraints,
@@ -36,8 +32,6 @@ class IslandSolver : public btMLCPSolver {
   btDantzigSolver dantzig_;
   int rowLimit_;
   bool directNow_ = false;  // the island being solved is solved directly
-  long direct_ = 0;
-  long iterative_ = 0;
 };
 
 }  // namespace tabletop

@@ -46,4 +46,10 @@ bool Shape::checkBoundary(const Table& table) {
   return status_ != EntityPositionStatus::OnTable;
 }
 
+double Shape::reach(const btVector3& direction) const {
+  const auto& convex = static_cast<const btConvexShape&>(*collisionShape_);
+  const btTransform& pose = body_->getWorldTransform();
+  return (pose * convex.localGetSupportingVertex(pose.getBasis().transpose() * direction)).dot(direction);
+}
+
 }  // namespace tabletop

@@ -42,6 +42,11 @@ class Shape {
   /// Distance from the centre to the surface along a horizontal local unit
   /// direction: where a push along -`direction` meets the body (report 3.5).
   virtual double surfaceDistance(const btVector3& direction) const = 0;
+  /// How far the entity's collision surface reaches along the world unit
+  /// `direction` in its current pose: the largest x.direction over its
+  /// points, metres (Bullet's support point; every entity shape is convex).
+  /// Needs the body.
+  double reach(const btVector3& direction) const;
   /// True when the shape has faces a push arrow follows (cube, box).
   virtual bool hasFaces() const { return false; }
 

@@ -8,8 +8,6 @@
 namespace tabletop {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // Uniform numbers from the generator's raw 64-bit words, the same on every
 // standard library.
 class Draw {

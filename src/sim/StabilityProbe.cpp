@@ -30,15 +30,6 @@ double mechanicalEnergy(const World& world, double gravity) {
   return e;
 }
 
-// Height of the body's lowest point: where its collision surface (a convex
-// shape for every entity) reaches furthest down, m.
-double lowestPoint(const btRigidBody& body) {
-  const auto& shape = static_cast<const btConvexShape&>(*body.getCollisionShape());
-  const btTransform& pose = body.getWorldTransform();
-  const btVector3 down = pose.getBasis().transpose() * btVector3(0, -1, 0);
-  return (pose * shape.localGetSupportingVertex(down)).y();
-}
-
 }  // namespace
 
 StabilityReport probeStability(const Scenario& scenario, const Settings& settings, const StepObserver& afterStep) {
@@ -57,7 +48,7 @@ StabilityReport probeStability(const Scenario& scenario, const Settings& setting
       const btVector3 centre = body.getCenterOfMassPosition();
       r.worstDrift = std::max(r.worstDrift, double((centre - start[i]).length()));
       r.farthest = std::max(r.farthest, std::hypot(centre.x() - table.spec().centreX, centre.z() - table.spec().centreZ));
-      const double low = lowestPoint(body);
+      const double low = -world->entities()[i]->reach(btVector3(0, -1, 0));
       r.lowestOverFloor = std::min(r.lowestOverFloor, low);
       // Over the top: the report's drop test (3.4) still says OnTable.
       if (table.statusAt(centre.x(), centre.z()) == EntityPositionStatus::OnTable) {

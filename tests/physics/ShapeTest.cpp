@@ -115,5 +115,21 @@ TEST(SolidBox, SurfaceDistanceAlongAHorizontalRay) {
   EXPECT_NEAR(box.surfaceDistance(btVector3(c, 0, c)), 0.1 / c, kRel * 0.15);
 }
 
+// How far a body reaches along a world direction: a 0.1 m cube at height
+// 1 m reaches 1.05 m up; turned 45 degrees about Z, its edge reaches
+// 1 + 0.05 sqrt(2) m; a sphere of 0.03 m at the same centre reaches
+// 0.97 m down (-0.97 along -Y). Within a few ulps.
+TEST(Shape, ReachIsTheSupportPointAlongADirection) {
+  const btVector3 up(0, 1, 0);
+  Cube cube("c", 0.1);
+  cube.createBody(1.0, Material{}, btTransform(btQuaternion::getIdentity(), btVector3(0.3, 1.0, -0.2)));
+  EXPECT_NEAR(cube.reach(up), 1.05, kRel);
+  cube.body()->setWorldTransform(btTransform(btQuaternion(btVector3(0, 0, 1), 0.25 * SIMD_PI), btVector3(0.3, 1.0, -0.2)));
+  EXPECT_NEAR(cube.reach(up), 1.0 + 0.05 * std::sqrt(2.0), kRel);
+  Sphere ball("s", 0.03);
+  ball.createBody(1.0, Material{}, btTransform(btQuaternion::getIdentity(), btVector3(0.3, 1.0, -0.2)));
+  EXPECT_NEAR(ball.reach(-up), -0.97, kRel);
+}
+
 }  // namespace
 }  // namespace tabletop

@@ -93,11 +93,7 @@ TEST_P(RandomRuns, StayFiniteInTheWorldAndGainNoEnergy) {
     double below = 0.0;  // the lowest any body's highest point came, m
     const StabilityReport r = probeStability(s, s.settings, [&](const Simulation& sim) {
       for (const auto& e : dynamic_cast<const World&>(sim).entities()) {
-        const btRigidBody& body = *e->body();
-        const btTransform& pose = body.getWorldTransform();
-        const btVector3 up = pose.getBasis().transpose() * btVector3(0, 1, 0);
-        const auto& shape = static_cast<const btConvexShape&>(*body.getCollisionShape());
-        below = std::min(below, double((pose * shape.localGetSupportingVertex(up)).y()));
+        below = std::min(below, e->reach(btVector3(0, 1, 0)));
       }
     });
     double lightest = s.entities.at(0).mass;
