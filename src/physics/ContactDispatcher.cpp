@@ -1,0 +1,38 @@
+#include "physics/ContactDispatcher.h"
+
+#include "physics/ContactResult.h"
+
+namespace tabletop {
+
+ContactDispatcher::ContactDispatcher(btCollisionConfiguration* configuration)
+    : btCollisionDispatcher(configuration) {
+  setDispatcherFlags(getDispatcherFlags() & ~CD_USE_RELATIVE_CONTACT_BREAKING_THRESHOLD);
+  setNearCallback(&ContactDispatcher::nearCallback);
+}
+
+void ContactDispatcher::nearCallback(btBroadphasePair& pair, btCollisionDispatcher& dispatcher,
+                                     const btDispatcherInfo& info) {
+  const auto* object0 = static_cast<const btCollisionObject*>(pair.m_pProxy0->m_clientObject);
+  const auto* object1 = static_cast<const btCollisionObject*>(pair.m_pProxy1->m_clientObject);
+  if (!dispatcher.needsCollision(object0, object1)) return;
+  const btCollisionObjectWrapper wrap0(nullptr, object0->getCollisionShape(), object0, object0->getWorldTransform(),
+                                       -1, -1);
+  const btCollisionObjectWrapper wrap1(nullptr, object1->getCollisionShape(), object1, object1->getWorldTransform(),
+                                       -1, -1);
+  // The pair keeps its algorithm from step to step.
+  if (pair.m_algorithm == nullptr) {
+    pair.m_algorithm = dispatcher.findAlgorithm(&wrap0, &wrap1, nullptr, BT_CONTACT_POINT_ALGORITHMS);
+  }
+  if (pair.m_algorithm == nullptr) return;
+  ContactResult result(&wrap0, &wrap1);
+  if (info.m_dispatchFunc == btDispatcherInfo::DISPATCH_DISCRETE) {
+    pair.m_algorithm->processCollision(&wrap0, &wrap1, info, &result);
+  } else {
+    const btScalar impact = pair.m_algorithm->calculateTimeOfImpact(const_cast<btCollisionObject*>(object0),
+                                                                    const_cast<btCollisionObject*>(object1), info,
+                                                                    &result);
+    if (impact < info.m_timeOfImpact) info.m_timeOfImpact = impact;
+  }
+}
+
+}  // namespace tabletop
