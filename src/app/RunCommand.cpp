@@ -60,7 +60,8 @@ Scenario loadScenario(const ScenarioSource& source, const RunOptions& options, S
       std::ostringstream head;
       head << scenario.name << ": for an error of at most " << *options.tolerance << " m, "
            << (choice.met ? "chose " : "could not meet it everywhere; chose ") << 1.0 / settings.timestep << " Hz ("
-           << settings.timestep << " s), " << settings.iterations << " iterations, " << toString(settings.integrator)
+           << settings.timestep << " s), " << describeSolver(settings.solver, settings.iterations) << ", "
+           << toString(settings.integrator)
            << "; by kind of motion, the cheapest measured settings within it:";
       choiceLines->push_back(head.str());
       for (const std::string& r : choice.reasons) choiceLines->push_back("  " + r);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace tabletop {
@@ -23,6 +24,11 @@ inline constexpr int kDirectRowLimit = 300;
 
 /// The scenario and command-line name ("sequential_impulse", "dantzig").
 std::string_view toString(ContactSolver s);
+
+/// How a run's header names the solver: "10 iterations" for sequential
+/// impulses; "dantzig solver (10 iterations above 300 rows)" for Dantzig,
+/// whose islands ignore the count unless too large.
+std::string describeSolver(ContactSolver s, int iterations);
 
 /// Parses a name; nullopt if it is not one.
 std::optional<ContactSolver> contactSolverFromString(std::string_view name);

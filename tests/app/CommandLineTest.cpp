@@ -19,6 +19,8 @@
 #include <unistd.h>
 #include <nlohmann/json.hpp>
 
+#include "core/ContactSolver.h"
+#include "core/Settings.h"
 #include "image/PngFile.h"
 
 namespace {
@@ -95,6 +97,17 @@ TEST(CommandLine, RunTextHonoursOverrides) {
       << o.out;
   EXPECT_NE(o.out.find("push A Left"), std::string::npos);
   EXPECT_NE(o.out.find("state_hash"), std::string::npos);
+}
+
+// A scene on the Dantzig solver says so in its header, with the sweeps
+// only islands over the row limit get.
+TEST(CommandLine, RunHeaderNamesTheContactSolver) {
+  const Outcome o = run(kBin + "tabletop run " + kScenarios + "hard/mass_ratio_100.json --duration 0.05");
+  ASSERT_EQ(o.status, 0) << o.err;
+  EXPECT_NE(o.out.find(", dantzig solver (" + std::to_string(tabletop::Settings{}.iterations) + " iterations above " +
+                       std::to_string(tabletop::kDirectRowLimit) + " rows), trapezoid integrator;"),
+            std::string::npos)
+      << o.out;
 }
 
 // Two processes, the same scenario and settings: the same hash.
