@@ -23,6 +23,9 @@ struct Settings {
   /// How contact impulses are found: sequential impulses (`iterations`
   /// sweeps) or each island solved exactly (README, "Hard cases").
   ContactSolver solver = ContactSolver::SequentialImpulse;
+  /// Full physics cuts a step into up to this many equal parts while a
+  /// body moves fast for its size (README, "Hard cases"); 1 never does.
+  int maxSubsteps = 64;
   double duration = 10.0;         ///< longest simulated time, seconds
   double gravity = 9.81;          ///< m/s^2, acting along -Y
   bool endAtRest = true;          ///< stop once the script is done and all is at rest

@@ -2,12 +2,24 @@
 
 #include "physics/ContactResult.h"
 
+
 namespace tabletop {
 
 ContactDispatcher::ContactDispatcher(btCollisionConfiguration* configuration)
     : btCollisionDispatcher(configuration) {
   setDispatcherFlags(getDispatcherFlags() & ~CD_USE_RELATIVE_CONTACT_BREAKING_THRESHOLD);
   setNearCallback(&ContactDispatcher::nearCallback);
+  // Bullet's default configuration makes every convex pair with one
+  // create function; it is copied and given Bullet's multipoint defaults.
+  const auto* convex = static_cast<const btConvexConvexAlgorithm::CreateFunc*>(
+      configuration->getCollisionAlgorithmCreateFunc(CONVEX_HULL_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE));
+  multipoint_ = std::make_unique<btConvexConvexAlgorithm::CreateFunc>(*convex);
+  multipoint_->m_numPerturbationIterations = 3;
+  multipoint_->m_minimumPointsPerturbationThreshold = 3;
+  for (const int other : {BOX_SHAPE_PROXYTYPE, CYLINDER_SHAPE_PROXYTYPE}) {
+    registerCollisionCreateFunc(CYLINDER_SHAPE_PROXYTYPE, other, multipoint_.get());
+    registerCollisionCreateFunc(other, CYLINDER_SHAPE_PROXYTYPE, multipoint_.get());
+  }
 }
 
 void ContactDispatcher::nearCallback(btBroadphasePair& pair, btCollisionDispatcher& dispatcher,

@@ -28,6 +28,10 @@ bool isClippedBoxPair(const btPersistentManifold& manifold) {
          clipped(manifold.getBody1());
 }
 
+// How many times the settings' solver iterations a step with an impact
+// gets (DynamicsWorld, 4).
+constexpr int kImpactSweeps = 5;
+
 // How far apart along the contact plane a point's two sides may slide
 // before it is stale, metres: a point found in this step has none (to
 // rounding); one kept from an earlier step has the two bodies' relative
@@ -149,9 +153,27 @@ void DynamicsWorld::applyRollingResistance() {
   }
 }
 
+void DynamicsWorld::step(double dt) {
+  if (lastStep_ > 0 && dt != lastStep_) {
+    const double ratio = dt / lastStep_;
+    for (int m = 0; m < getDispatcher()->getNumManifolds(); ++m) {
+      btPersistentManifold* manifold = getDispatcher()->getManifoldByIndexInternal(m);
+      for (int p = 0; p < manifold->getNumContacts(); ++p) {
+        btManifoldPoint& point = manifold->getContactPoint(p);
+        point.m_appliedImpulse *= ratio;
+        point.m_appliedImpulseLateral1 *= ratio;
+        point.m_appliedImpulseLateral2 *= ratio;
+      }
+    }
+  }
+  lastStep_ = dt;
+  // maxSubSteps = 0: exactly one step of the given length.
+  stepSimulation(dt, 0);
+}
+
 void DynamicsWorld::integrateTransforms(btScalar timeStep) {
   btDiscreteDynamicsWorld::integrateTransforms(timeStep);
-  if (!(smoothAcceleration_ > 0)) return;
+  if (!secondOrder_ || !(smoothAcceleration_ > 0)) return;
   const btScalar limit = smoothAcceleration_ * timeStep;
   for (int i = 0; i < m_nonStaticRigidBodies.size(); ++i) {
     btRigidBody* body = m_nonStaticRigidBodies[i];
@@ -175,7 +197,66 @@ void DynamicsWorld::solveConstraints(btContactSolverInfo& solverInfo) {
       dropDriftedPoints(*manifold);
     }
   }
+  const int iterations = solverInfo.m_numIterations;
+  if (markImpacts(solverInfo.m_timeStep)) solverInfo.m_numIterations = kImpactSweeps * iterations;
   btDiscreteDynamicsWorld::solveConstraints(solverInfo);
+  solverInfo.m_numIterations = iterations;
+  forgetImpacts();
+}
+
+namespace {
+
+// A bit of btManifoldPoint::m_contactPointFlags that Bullet's own flags
+// (1 to 16) leave free: the point is an impact in this step.
+constexpr int kImpactFlag = 1 << 20;
+
+btVector3 velocityAt(const btCollisionObject* object, const btVector3& point) {
+  const btRigidBody* body = btRigidBody::upcast(object);
+  if (!body) return btVector3(0, 0, 0);
+  return body->getVelocityInLocalPoint(point - body->getCenterOfMassPosition());
+}
+
+}  // namespace
+
+// Marks the points whose bodies close along the normal faster than smooth
+// forces could make them in one step.
+bool DynamicsWorld::markImpacts(double timeStep) {
+  if (!(smoothAcceleration_ > 0)) return false;
+  bool any = false;
+  const double limit = smoothAcceleration_ * timeStep;
+  btDispatcher* dispatcher = getDispatcher();
+  for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
+    btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
+    for (int p = 0; p < manifold->getNumContacts(); ++p) {
+      btManifoldPoint& point = manifold->getContactPoint(p);
+      // The normal on B points from B towards A: A closes on B when its
+      // velocity relative to B points against it.
+      const btVector3 relative = velocityAt(manifold->getBody0(), point.getPositionWorldOnA()) -
+                                 velocityAt(manifold->getBody1(), point.getPositionWorldOnB());
+      if (-relative.dot(point.m_normalWorldOnB) > limit) {
+        point.m_contactPointFlags |= kImpactFlag;
+        any = true;
+      }
+    }
+  }
+  return any;
+}
+
+// Drops the solved impulses of the marked points, so that the next step
+// does not start from them.
+void DynamicsWorld::forgetImpacts() {
+  btDispatcher* dispatcher = getDispatcher();
+  for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
+    btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
+    for (int p = 0; p < manifold->getNumContacts(); ++p) {
+      btManifoldPoint& point = manifold->getContactPoint(p);
+      if (!(point.m_contactPointFlags & kImpactFlag)) continue;
+      point.m_appliedImpulse = 0;
+      point.m_appliedImpulseLateral1 = 0;
+      point.m_appliedImpulseLateral2 = 0;
+      point.m_contactPointFlags &= ~kImpactFlag;
+    }
+  }
 }
 
 }  // namespace tabletop

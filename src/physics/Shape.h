@@ -35,6 +35,10 @@ class Shape {
   virtual btVector3 localInertia(double mass) const = 0;
   /// Half extents of the local bounding box, metres.
   virtual btVector3 halfExtents() const = 0;
+  /// Distance from the centre of mass to the farthest point, metres, or a
+  /// bound on it (the bounding box's half diagonal unless a shape knows
+  /// better).
+  virtual double boundingRadius() const { return halfExtents().length(); }
   /// Distance from the centre of mass down to the lowest point, metres.
   virtual double below() const { return halfExtents().y(); }
   /// Distance from the centre of mass up to the highest point, metres.

@@ -16,6 +16,7 @@ class Sphere : public Shape {
   btVector3 localInertia(double mass) const override;  // 2/5 m r^2
   btVector3 halfExtents() const override { return btVector3(radius_, radius_, radius_); }
   double surfaceDistance(const btVector3&) const override { return radius_; }
+  double boundingRadius() const override { return radius_; }
 
  private:
   double radius_;

@@ -1,5 +1,7 @@
 #include "physics/Table.h"
 
+#include "physics/PaddedShape.h"
+
 namespace tabletop {
 
 Table::Table(const TableSpec& spec, bool separateLegs) : spec_(spec) {
@@ -9,13 +11,28 @@ Table::Table(const TableSpec& spec, bool separateLegs) : spec_(spec) {
     leg = std::make_unique<Cylinder>("table leg", spec.legRadius, spec.legRadius, legHeight);
   }
 
-  // The compounds' frame sits on the ground under the table's centre; the
-  // children do not own their shapes (the SolidBox and Cylinders do).
+  // The compounds' children are the top's and legs' shapes with their
+  // bounding boxes padded by Bullet's contact breaking threshold
+  // (PaddedShape); the compounds do not own them.
+  const auto& topBox = static_cast<const btBoxShape&>(top_->collisionShape());
+  auto top = std::make_unique<PaddedShape<btBoxShape>>(gContactBreakingThreshold, topBox.getHalfExtentsWithMargin());
+  top->setMargin(topBox.getMargin());
+  top->initializePolyhedralFeatures();
+  children_.push_back(std::move(top));
+  for (const auto& leg : legs_) {
+    const auto& cylinder = static_cast<const btCylinderShape&>(leg->collisionShape());
+    auto padded =
+        std::make_unique<PaddedShape<btCylinderShape>>(gContactBreakingThreshold, cylinder.getHalfExtentsWithMargin());
+    padded->setMargin(cylinder.getMargin());
+    children_.push_back(std::move(padded));
+  }
+
+  // The compounds' frame sits on the ground under the table's centre.
   compound_ = std::make_unique<btCompoundShape>(false, separateLegs ? 1 : 5);
   btTransform local;
   local.setIdentity();
   local.setOrigin(btVector3(0, spec.height - 0.5 * spec.thickness, 0));
-  compound_->addChildShape(local, &top_->collisionShape());
+  compound_->addChildShape(local, children_[0].get());
   btCompoundShape* legsHolder = compound_.get();
   if (separateLegs) {
     legsCompound_ = std::make_unique<btCompoundShape>(false, 4);
@@ -23,7 +40,7 @@ Table::Table(const TableSpec& spec, bool separateLegs) : spec_(spec) {
   }
   for (int i = 0; i < 4; ++i) {
     local.setOrigin(legCentre(i) - btVector3(spec.centreX, 0, spec.centreZ));
-    legsHolder->addChildShape(local, &legs_[i]->collisionShape());
+    legsHolder->addChildShape(local, children_[static_cast<std::size_t>(i) + 1].get());
   }
 
   body_ = makeStaticBody(*compound_);

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <memory>
+#include <vector>
 
 #include <btBulletDynamicsCommon.h>
 
@@ -62,6 +63,7 @@ class Table {
   TableSpec spec_;
   std::unique_ptr<SolidBox> top_;
   std::array<std::unique_ptr<Cylinder>, 4> legs_;
+  std::vector<std::unique_ptr<btCollisionShape>> children_;  // the compounds' shapes: top, then legs
   std::unique_ptr<btCompoundShape> compound_;
   std::unique_ptr<btRigidBody> body_;
   std::unique_ptr<btCompoundShape> legsCompound_;

@@ -28,6 +28,9 @@ constexpr double kSupportNormalY = 0.5;
 constexpr double kRestSpeed = 5e-3;   // m/s
 constexpr double kRestSpin = 5e-2;    // rad/s
 constexpr double kRestWindow = 0.1;   // s
+// How far an entity may move in one part of a step, as a share of its
+// smallest half extent (World::substeps).
+constexpr double kSubstepTravel = 0.5;
 
 btVector3 toBullet(const Vec3& v) { return btVector3(v.x, v.y, v.z); }
 Vec3 toVec3(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
@@ -105,6 +108,7 @@ World::World(const Settings& settings, const TableSpec& table, const Material& g
       BOX_SHAPE_PROXYTYPE, BOX_SHAPE_PROXYTYPE,
       configuration_->getCollisionAlgorithmCreateFunc(CONVEX_HULL_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE));
   world_->setGravity(btVector3(0, -settings.gravity, 0));
+  world_->setSecondOrderPositions(settings.integrator == Integrator::Trapezoid);
   updateSmoothAcceleration();
   btContactSolverInfo& solver = world_->getSolverInfo();
   solver.m_numIterations = settings.iterations;
@@ -201,12 +205,15 @@ Shape& World::addEntity(std::unique_ptr<Shape> shape, double mass, const Materia
   const double inner = std::min({half.x(), half.y(), half.z()});
   body->setCcdMotionThreshold(inner);
   body->setCcdSweptSphereRadius(0.5 * inner);
+  Tracker tracker;
+  tracker.inner = inner;
+  tracker.spinArm = std::max(0.0, shape->boundingRadius() - inner);
   body->setFlags((body->getFlags() & ~kGyroscopicFlags) | gyroscopicFlag(settings_.gyroscopic));
   if (!settings_.sleeping) body->setActivationState(DISABLE_DEACTIVATION);
   world_->addRigidBody(body);
   indexOf_.emplace(shape->name(), entities_.size());
   entities_.push_back(std::move(shape));
-  trackers_.emplace_back();
+  trackers_.push_back(tracker);
   if (entities_.back()->material().friction > entityFriction_) {
     entityFriction_ = entities_.back()->material().friction;
     updateSmoothAcceleration();
@@ -256,10 +263,6 @@ void World::makeDynamic(std::size_t i, const btVector3& velocity) {
 // entityFriction_ is the largest of the entities', kept as they are added
 // so that adding N entities costs O(N), not O(N^2).
 void World::updateSmoothAcceleration() {
-  if (settings_.integrator != Integrator::Trapezoid) {
-    world_->setSmoothAcceleration(0.0);
-    return;
-  }
   const double otherFriction =
       std::max({entityFriction_, table_.spec().material.friction, ground_.material().friction});
   const double mu = combine(Material{entityFriction_}, Material{otherFriction}).friction;
@@ -419,11 +422,36 @@ void World::start() {
 void World::step() {
   start();
   addLegsIfReachable();
-  // maxSubSteps = 0: exactly one step of the given length, no interpolation.
-  world_->stepSimulation(settings_.timestep, 0);
+  const int n = substeps();
+  for (int k = 0; k < n; ++k) world_->step(settings_.timestep / n);
   ++steps_;
   time_ = static_cast<double>(steps_) * settings_.timestep;
   observe(true);
+}
+
+// How many equal parts a step is cut into: enough that no awake entity
+// moves more than kSubstepTravel of its smallest half extent in one part,
+// counting both its centre's travel and its farthest point's turn about
+// the centre, and at most Settings::maxSubsteps. A body that moves more
+// than that in one step strikes what it meets part-way into it, at a time
+// of impact that only a shorter step finds: a 2 cm cube at 20 m/s meeting
+// another at 240 Hz kept 14.2 m/s and gave the other 5.7 (the plastic
+// impact gives each 9.98); a 2.7 cm cube landing while spinning at
+// 130 rad/s turns 2.2 rad in a step at 60 Hz, and the corners found at the
+// step's start were not the ones that reached the floor. Slow scenes and
+// bodies at rest are stepped whole.
+int World::substeps() const {
+  if (settings_.maxSubsteps <= 1) return 1;
+  double parts = 1.0;
+  for (std::size_t i = 0; i < entities_.size(); ++i) {
+    const btRigidBody* body = entities_[i]->body();
+    if (body->isStaticOrKinematicObject() || !body->isActive()) continue;
+    const Tracker& t = trackers_[i];
+    const double travel = (body->getLinearVelocity().length() + body->getAngularVelocity().length() * t.spinArm) *
+                          settings_.timestep;
+    parts = std::max(parts, travel / (kSubstepTravel * t.inner));
+  }
+  return static_cast<int>(std::min(std::ceil(parts), static_cast<double>(settings_.maxSubsteps)));
 }
 
 bool World::allAtRest() const {

@@ -97,12 +97,15 @@ class World : public Simulation {
     int lastSupport = kNoSupport;  // the last support that was not none
     double quietSince = -1.0;  // when the entity last became slow, or -1
     bool atRest = true;
+    double inner = 0.0;  // the smallest half extent, m
+    double spinArm = 0.0;  // how much farther than `inner` its farthest point is, m
   };
 
   Shape& entity(const std::string& name);
   void start();
   void updateSmoothAcceleration();
   void addLegsIfReachable();
+  int substeps() const;
   void observe(bool emit);
   void record(const Event& e);
   std::string participantName(const btCollisionObject* object) const;

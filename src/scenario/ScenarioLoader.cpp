@@ -253,17 +253,24 @@ void choice(Fields& f, const std::string& key, const Enum (&values)[N], Enum& in
   }
 }
 
+// An optional integer setting from `low` to `high`, into `value`.
+void integer(Fields& f, const char* key, int low, int high, int& value) {
+  const json* it = f.get(key, false);
+  if (!it) return;
+  if (!it->is_number_integer() || it->get<long long>() < low || it->get<long long>() > high) {
+    f.fail(f.at(key), "expected an integer from " + std::to_string(low) + " to " + std::to_string(high) + ", got " +
+                          shown(*it));
+  } else {
+    value = it->get<int>();
+  }
+}
+
 Settings readSettings(const json& j, std::vector<Problem>& problems) {
   Settings s;
   Fields f(j, "/settings", problems);
   s.timestep = f.number("timestep", kTimestep, s.timestep);
-  if (const json* it = f.get("iterations", false)) {
-    if (!it->is_number_integer() || it->get<long long>() < 1 || it->get<long long>() > 10000) {
-      f.fail(f.at("iterations"), "expected an integer from 1 to 10000, got " + shown(*it));
-    } else {
-      s.iterations = it->get<int>();
-    }
-  }
+  integer(f, "iterations", 1, 10000, s.iterations);
+  integer(f, "max_substeps", 1, 1000, s.maxSubsteps);
   choice(f, "solver", kAllContactSolvers, s.solver);
   s.duration = f.number("duration", kSpan, s.duration);
   s.gravity = f.number("gravity", kGravity, s.gravity);

@@ -102,6 +102,7 @@ nlohmann::json toJson(const RunResult& r) {
           {"settings",
            {{"timestep", r.settings.timestep},
             {"iterations", r.settings.iterations},
+            {"max_substeps", r.settings.maxSubsteps},
             {"solver", toString(r.settings.solver)},
             {"integrator", toString(r.settings.integrator)},
             {"duration", r.settings.duration},

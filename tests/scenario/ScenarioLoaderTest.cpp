@@ -32,6 +32,14 @@ const char* const kGood = R"({
   ]
 })";
 
+// max_substeps: 64 unless given; 1 turns the substeps off.
+TEST(ScenarioLoader, ReadsTheSubstepLimit) {
+  const char* text = R"({"version": 1, "name": "t", "settings": {"max_substeps": 1},
+                         "entities": [{"name": "A", "shape": "cube", "size": 0.1, "position": [0, 0], "mass": 1}]})";
+  EXPECT_EQ(ScenarioLoader::loadText(text, "one.json").settings.maxSubsteps, 1);
+  EXPECT_EQ(Settings{}.maxSubsteps, 64);
+}
+
 TEST(ScenarioLoader, ReadsEveryField) {
   const Scenario s = ScenarioLoader::loadText(kGood, "good.json");
   EXPECT_EQ(s.name, "good");
@@ -164,6 +172,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"FractionalIterations", R"({"version": 1, "name": "t", "settings": {"iterations": 2.5},
                    "entities": [{"name": "A", "shape": "cube", "size": 0.1, "position": [0, 0], "mass": 1}]})",
                  "/settings/iterations", "an integer from 1 to 10000"},
+        BadInput{"NoSubsteps", R"({"version": 1, "name": "t", "settings": {"max_substeps": 0},
+                   "entities": [{"name": "A", "shape": "cube", "size": 0.1, "position": [0, 0], "mass": 1}]})",
+                 "/settings/max_substeps", "expected an integer from 1 to 1000, got 0"},
         BadInput{"UnknownIntegrator", R"({"version": 1, "name": "t", "settings": {"integrator": "rk4"},
                    "entities": [{"name": "A", "shape": "cube", "size": 0.1, "position": [0, 0], "mass": 1}]})",
                  "/settings/integrator", "expected \"euler\" or \"trapezoid\", got \"rk4\""},
