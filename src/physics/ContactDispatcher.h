@@ -24,7 +24,7 @@ namespace tabletop {
 ///    cylinder at rest crept 54 um in 40 s with jolts of up to 7 mm/s.
 ///    With Bullet's perturbation (the pair tried at three small turns each
 ///    step, its default for multipoint contacts) the rim's points are all
-///    found at once: 2 um in 40 s. Spheres are left out (the turns moved
+///    found at once: 1.1 um in 40 s. Spheres are left out (the turns moved
 ///    a rolling ball's points off its lowest point and it sank into the
 ///    table), and so are cones (convex hulls): a cone placed resting on a
 ///    box was then found deeper in it than the 10 um a scene's start

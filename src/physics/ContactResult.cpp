@@ -83,21 +83,9 @@ void ContactResult::addContactPoint(const btVector3& normalOnBInWorld, const btV
       mergeRadius(*a.getCollisionShape(), *b.getCollisionShape(), manifold.getContactBreakingThreshold()));
   if (kept >= 0) {
     manifold.replaceContactPoint(point, kept);
-    return;
+  } else {
+    manifold.addManifoldPoint(point);
   }
-  // A full manifold makes room by dropping the point whose loss keeps the
-  // largest contact area; the new point takes its slot and, here, its
-  // normal impulse. Bullet starts the new point from nothing, so the load
-  // the dropped point carried was missing from the next solve's first
-  // guess: a cylinder standing on the table, whose rim gets one new point
-  // a step, jolted to 7 mm/s whenever a loaded point went.
-  const bool full = manifold.getNumContacts() == MANIFOLD_CACHE_SIZE;
-  btScalar carried[MANIFOLD_CACHE_SIZE] = {};
-  if (full) {
-    for (int p = 0; p < MANIFOLD_CACHE_SIZE; ++p) carried[p] = manifold.getContactPoint(p).m_appliedImpulse;
-  }
-  const int slot = manifold.addManifoldPoint(point);
-  if (full && slot >= 0 && slot < MANIFOLD_CACHE_SIZE) manifold.getContactPoint(slot).m_appliedImpulse = carried[slot];
 }
 
 }  // namespace tabletop
