@@ -451,7 +451,9 @@ int World::substeps() const {
                           settings_.timestep;
     parts = std::max(parts, travel / (kSubstepTravel * t.inner));
   }
-  return static_cast<int>(std::min(std::ceil(parts), static_cast<double>(settings_.maxSubsteps)));
+  // Written so that a non-finite speed (a diverging run, which the
+  // divergence guard then stops) gives the cap, never a cast of NaN.
+  return parts < settings_.maxSubsteps ? static_cast<int>(std::ceil(parts)) : settings_.maxSubsteps;
 }
 
 bool World::allAtRest() const {
