@@ -198,10 +198,11 @@ void DynamicsWorld::solveConstraints(btContactSolverInfo& solverInfo) {
     }
   }
   const int iterations = solverInfo.m_numIterations;
-  if (markImpacts(solverInfo.m_timeStep)) solverInfo.m_numIterations = kImpactSweeps * iterations;
+  const bool impacts = markImpacts(solverInfo.m_timeStep);
+  if (impacts) solverInfo.m_numIterations = kImpactSweeps * iterations;
   btDiscreteDynamicsWorld::solveConstraints(solverInfo);
   solverInfo.m_numIterations = iterations;
-  forgetImpacts();
+  if (impacts) forgetImpacts();
 }
 
 namespace {

@@ -30,6 +30,13 @@ Vec3 probeEnd(const Scenario& s, const Settings& settings) {
   return runScript(s, settings, *sim).entities.at(0).position;
 }
 
+// A scene's settings with the step set from a rate in Hz.
+Settings atRate(const Scenario& s, double rate) {
+  Settings settings = s.settings;
+  settings.timestep = 1.0 / rate;
+  return settings;
+}
+
 Scenario shipped(const std::string& name) {
   return ScenarioLoader::loadFile(std::string(TABLETOP_SOURCE_DIR) + "/scenarios/" + name + ".json");
 }
@@ -99,8 +106,7 @@ TEST(HardCase, PyramidStands) {
 TEST(HardCase, FastSmallSphereNeverPassesThroughTheTop) {
   const Scenario s = hard("fast_small_sphere");
   for (double rate : kRates) {
-    Settings settings = s.settings;
-    settings.timestep = 1.0 / rate;
+    const Settings settings = atRate(s, rate);
     const StabilityReport r = probeStability(s, settings);
     ASSERT_TRUE(r.complete) << rate << " Hz: " << r.failure;
     // Measured: 15 nm at 10 Hz and none at 30 Hz and above: the step is
@@ -140,8 +146,7 @@ TEST(HardCase, FastSmallCubeStrikesAndNeverPassesThrough) {
   const double strikeTime = (20.0 - strike) / (mu * g);
   const double edge = 0.5 * s.table.width;  // x of the edge the struck cube slides to, m
   for (double rate : kRates) {
-    Settings settings = s.settings;
-    settings.timestep = 1.0 / rate;
+    const Settings settings = atRate(s, rate);
     double behind = 1.0;  // least x of the target less x of the striker while both are on the table, m
     bool struck = false;
     double t = 0.0;
@@ -188,8 +193,7 @@ TEST(HardCase, CubesRestAtTheirHeightOnTheFloor) {
   for (const auto& c : cubes) {
     const Scenario s = hard(c.name);
     for (double rate : {60.0, 240.0, 1000.0, 10000.0}) {
-      Settings settings = s.settings;
-      settings.timestep = 1.0 / rate;
+      const Settings settings = atRate(s, rate);
       const StabilityReport r = probeStability(s, settings);
       ASSERT_TRUE(r.complete) << c.name << " at " << rate << " Hz: " << r.failure;
       EXPECT_LE(r.worstDrift, 0.01 * c.size) << c.name << " at " << rate << " Hz";
@@ -256,8 +260,7 @@ TEST(HardCase, ReportExamplesAtThirtyHertz) {
     const double rates[2] = {240.0, 30.0};
     StabilityReport r;
     for (int k = 0; k < 2; ++k) {
-      Settings settings = s.settings;
-      settings.timestep = 1.0 / rates[k];
+      const Settings settings = atRate(s, rates[k]);
       r = probeStability(s, settings, [&](const Simulation& sim) { end[k] = sim.snapshot(); });
       EXPECT_TRUE(r.complete) << c.name << " at " << rates[k] << " Hz: " << r.failure;
     }
