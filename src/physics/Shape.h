@@ -39,6 +39,9 @@ class Shape {
   /// bound on it (the bounding box's half diagonal unless a shape knows
   /// better).
   virtual double boundingRadius() const { return halfExtents().length(); }
+  /// How far a point of the surface can move per radian the body turns,
+  /// metres: at most the farthest point's distance from the centre of mass.
+  virtual double turningReach() const { return boundingRadius(); }
   /// Distance from the centre of mass down to the lowest point, metres.
   virtual double below() const { return halfExtents().y(); }
   /// Distance from the centre of mass up to the highest point, metres.

@@ -17,6 +17,8 @@ class Sphere : public Shape {
   btVector3 halfExtents() const override { return btVector3(radius_, radius_, radius_); }
   double surfaceDistance(const btVector3&) const override { return radius_; }
   double boundingRadius() const override { return radius_; }
+  // Turning about its centre, a sphere's surface stays where it was.
+  double turningReach() const override { return 0.0; }
 
  private:
   double radius_;

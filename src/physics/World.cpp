@@ -207,7 +207,7 @@ Shape& World::addEntity(std::unique_ptr<Shape> shape, double mass, const Materia
   body->setCcdSweptSphereRadius(0.5 * inner);
   Tracker tracker;
   tracker.inner = inner;
-  tracker.spinArm = std::max(0.0, shape->boundingRadius() - inner);
+  tracker.spinArm = shape->turningReach();
   body->setFlags((body->getFlags() & ~kGyroscopicFlags) | gyroscopicFlag(settings_.gyroscopic));
   if (!settings_.sleeping) body->setActivationState(DISABLE_DEACTIVATION);
   world_->addRigidBody(body);
@@ -449,7 +449,8 @@ int World::substeps() const {
     const Tracker& t = trackers_[i];
     const double travel = (body->getLinearVelocity().length() + body->getAngularVelocity().length() * t.spinArm) *
                           settings_.timestep;
-    parts = std::max(parts, travel / (kSubstepTravel * t.inner));
+    const double need = travel / (kSubstepTravel * t.inner);
+    if (!(need <= parts)) parts = need;  // keeps a NaN, which std::max would drop
   }
   // Written so that a non-finite speed (a diverging run, which the
   // divergence guard then stops) gives the cap, never a cast of NaN.

@@ -75,6 +75,9 @@ class World : public Simulation {
 
   /// The impulse (N*s, along the arrow) a push of `magnitude` gives.
   double pushImpulse(const Arrow& arrow, const PushMagnitude& magnitude);
+  /// How many equal parts the next step is cut into at the entities'
+  /// present velocities (see World.cpp).
+  int substeps() const;
 
   // Simulation
   std::string_view modeName() const override { return "bullet"; }
@@ -100,14 +103,13 @@ class World : public Simulation {
     double quietSince = -1.0;  // when the entity last became slow, or -1
     bool atRest = true;
     double inner = 0.0;  // the smallest half extent, m
-    double spinArm = 0.0;  // how much farther than `inner` its farthest point is, m
+    double spinArm = 0.0;  // how far its surface moves per radian turned, m
   };
 
   Shape& entity(const std::string& name);
   void start();
   void updateSmoothAcceleration();
   void addLegsIfReachable();
-  int substeps() const;
   void observe(bool emit);
   void record(const Event& e);
   std::string participantName(const btCollisionObject* object) const;

@@ -204,5 +204,42 @@ TEST(WorldModel, ABallOnTheFloorMeetsALegEitherWay) {
   EXPECT_LT((reachable[0].linearVelocity - always[0].linearVelocity).length(), 1e-12);
 }
 
+
+// A step is cut into as many equal parts as keep every point of every awake
+// body from moving more than a quarter of its smallest size in one:
+//   parts = ceil((|v| + |w| R) dt / (h / 2)),
+// h the smallest half extent and R the farthest point's distance from the
+// centre (a cube's half diagonal, sqrt(3) h); a sphere's turn moves none of
+// its surface. The cap stands for any faster or non-finite speed.
+TEST_F(PhysicsFixture, AStepIsCutIntoPartsByHowFarThePointsMove) {
+  const double dt = 1.0 / 60.0, h = 0.05;
+  World& w = makeTable(dt);
+  btRigidBody& cube = *w.addEntity(std::make_unique<Cube>("cube", 2 * h), 1.0, Material{},
+                                   btVector3(3, 2, 0), 0).body();
+  btRigidBody& ball = *w.addEntity(std::make_unique<Sphere>("ball", h), 1.0, Material{},
+                                   btVector3(-3, 2, 0), 0).body();
+  const auto parts = [&](double travel) { return static_cast<int>(std::ceil(travel / (h / 2))); };
+  EXPECT_EQ(w.substeps(), 1);
+
+  cube.setLinearVelocity(btVector3(6.1, 0, 0));
+  EXPECT_EQ(w.substeps(), parts(6.1 * dt));
+  EXPECT_EQ(w.substeps(), 5);
+
+  cube.setLinearVelocity(btVector3(0, 0, 0));
+  cube.setAngularVelocity(btVector3(0, 30, 0));
+  EXPECT_EQ(w.substeps(), parts(30 * std::sqrt(3.0) * h * dt));
+  EXPECT_EQ(w.substeps(), 2);
+
+  cube.setAngularVelocity(btVector3(0, 0, 0));
+  ball.setAngularVelocity(btVector3(1000, 0, 0));
+  EXPECT_EQ(w.substeps(), 1);
+  ball.setLinearVelocity(btVector3(0, -6.1, 0));
+  EXPECT_EQ(w.substeps(), 5);
+
+  ball.setLinearVelocity(btVector3(0, -1e6, 0));
+  EXPECT_EQ(w.substeps(), w.settings().maxSubsteps);
+  ball.setLinearVelocity(btVector3(0, std::nan(""), 0));
+  EXPECT_EQ(w.substeps(), w.settings().maxSubsteps);
+}
 }  // namespace
 }  // namespace tabletop

@@ -57,7 +57,7 @@ INSTANTIATE_TEST_SUITE_P(
                       Pinned{"example2_two_cubes", SimulationMode::Bullet, "0ec8e29b28ab61f6"},
                       Pinned{"example2_two_cubes", SimulationMode::Compat, "1699039330c47e4e"},
                       Pinned{"example2_two_cubes", SimulationMode::Rules, "ac763547cc1d6a3d"},
-                      Pinned{"example3_stacked_cubes", SimulationMode::Bullet, "2bc48f75ddb1de80"},
+                      Pinned{"example3_stacked_cubes", SimulationMode::Bullet, "113cb2a80d4d0aae"},
                       Pinned{"example3_stacked_cubes", SimulationMode::Compat, "18de319a66648a31"},
                       Pinned{"example3_stacked_cubes", SimulationMode::Rules, "063bc435ac222aa8"},
                       Pinned{"example4_two_spheres", SimulationMode::Bullet, "53a24065cf235eb4"},
