@@ -208,8 +208,9 @@ TEST(HardCase, CubesRestAtTheirHeightOnTheFloor) {
 // as it does at the origin, to 1 nm over its three pushes on the table
 // (measured 2e-12 m: double precision's spacing at 1000 m is 1.1e-13 m;
 // float's, 61 um, would be the whole tolerance of a fine scene). Once the
-// cube has fallen and tumbled on the floor the two runs are 3 cm apart
-// (README, "Hard cases").
+// cube has fallen and tumbled on the floor the two runs are 3 cm apart, as
+// are two runs at the origin 1e-9 m apart at the start: a chaotic tumble,
+// not the distance (README, "Hard cases").
 TEST(HardCase, FarTableBehavesAsAtTheOrigin) {
   Scenario near = shipped("example1_single_cube");
   Scenario far = near;
