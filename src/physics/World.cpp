@@ -207,7 +207,7 @@ Shape& World::addEntity(std::unique_ptr<Shape> shape, double mass, const Materia
   body->setCcdSweptSphereRadius(0.5 * inner);
   Tracker tracker;
   tracker.inner = inner;
-  tracker.spinArm = shape->turningReach();
+  tracker.turningReach = shape->turningReach();
   body->setFlags((body->getFlags() & ~kGyroscopicFlags) | gyroscopicFlag(settings_.gyroscopic));
   if (!settings_.sleeping) body->setActivationState(DISABLE_DEACTIVATION);
   world_->addRigidBody(body);
@@ -447,7 +447,7 @@ int World::substeps() const {
     const btRigidBody* body = entities_[i]->body();
     if (body->isStaticOrKinematicObject() || !body->isActive()) continue;
     const Tracker& t = trackers_[i];
-    const double travel = (body->getLinearVelocity().length() + body->getAngularVelocity().length() * t.spinArm) *
+    const double travel = (body->getLinearVelocity().length() + body->getAngularVelocity().length() * t.turningReach) *
                           settings_.timestep;
     const double need = travel / (kSubstepTravel * t.inner);
     if (!(need <= parts)) parts = need;  // keeps a NaN, which std::max would drop

@@ -103,7 +103,7 @@ class World : public Simulation {
     double quietSince = -1.0;  // when the entity last became slow, or -1
     bool atRest = true;
     double inner = 0.0;  // the smallest half extent, m
-    double spinArm = 0.0;  // how far its surface moves per radian turned, m
+    double turningReach = 0.0;  // how far its surface moves per radian turned, m
   };
 
   Shape& entity(const std::string& name);

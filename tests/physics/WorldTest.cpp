@@ -204,7 +204,6 @@ TEST(WorldModel, ABallOnTheFloorMeetsALegEitherWay) {
   EXPECT_LT((reachable[0].linearVelocity - always[0].linearVelocity).length(), 1e-12);
 }
 
-
 // A step is cut into as many equal parts as keep every point of every awake
 // body from moving more than a quarter of its smallest size in one:
 //   parts = ceil((|v| + |w| R) dt / (h / 2)),
@@ -263,5 +262,6 @@ TEST_F(PhysicsFixture, ARestingCubeKeepsStillWhenTheStepIsCut) {
   w.step();
   EXPECT_LT(cube.body()->getLinearVelocity().length(), 1e-7);
 }
+
 }  // namespace
 }  // namespace tabletop
