@@ -71,8 +71,8 @@ Scenario loadScenario(const ScenarioSource& source, const RunOptions& options, S
   if (options.iterations) settings.iterations = *options.iterations;
   if (options.integrator) settings.integrator = *options.integrator;
   if (options.duration) settings.duration = *options.duration;
-  const std::string tooLong = ScenarioLoader::stepCountProblem(settings);
-  if (!tooLong.empty()) throw ScenarioError(source.name, {{"/settings", tooLong + " with the command line's settings"}});
+  const std::string tooLong = ScenarioLoader::runSizeProblem(settings, scenario.entities.size());
+  if (!tooLong.empty()) throw ScenarioError(scenario, {{"/settings", tooLong + " with the command line's settings"}});
   return scenario;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,6 +14,8 @@
 #include "core/Vec3.h"
 
 namespace tabletop {
+
+class JsonLocator;
 
 /// One entity as a scenario file describes it. Sizes in metres: a cube's
 /// side, a sphere's radius, a box's width, height and depth, a cylinder's
@@ -52,6 +55,9 @@ struct Scenario {
   std::string name;
   std::string description;
   std::string file;  ///< where it was read from
+  /// Where each value stands in that file, so that a problem found after
+  /// loading (at run time) is located too; null for a scene built in code.
+  std::shared_ptr<const JsonLocator> locator;
   TableSpec table;
   Material ground = kNeutralMaterial;  ///< the floor's material
   std::vector<EntitySpec> entities;

@@ -6,11 +6,15 @@
 #include <limits>
 #include <set>
 #include <sstream>
+#include <unordered_map>
+
+#include <sys/stat.h>
 
 #include <nlohmann/json.hpp>
 
 #include "core/DirectionDef.h"
 #include "core/EnumNames.h"
+#include "core/Text.h"
 #include "scenario/JsonLocator.h"
 #include "scenario/ScenarioError.h"
 
@@ -68,7 +72,15 @@ bool inRange(double v, const Range& r) {
   return std::isfinite(v) && (r.loOpen ? v > r.lo : v >= r.lo) && v <= r.hi;
 }
 
+// A name as a message quotes it in prose, and as it echoes a value.
+std::string quotedName(const std::string& name) { return "'" + shownText(name, 40) + "'"; }
+std::string quotedValue(const std::string& text) { return "\"" + shownText(text, 40) + "\""; }
+
+// A value as a message shows it: short, on one line, whatever its size.
 std::string shown(const json& j) {
+  if (j.is_string()) return quotedValue(j.get_ref<const std::string&>());
+  if (j.is_array() && j.size() > 8) return "an array of " + std::to_string(j.size()) + " values";
+  if (j.is_object() && j.size() > 8) return "an object of " + std::to_string(j.size()) + " keys";
   std::string s = j.dump();
   return s.size() > 40 ? s.substr(0, 37) + "..." : s;
 }
@@ -118,14 +130,26 @@ class Fields {
     return v.get<double>();
   }
 
-  std::string string(const std::string& key, const std::string& fallback, bool required = false) {
+  // A non-empty string of printable characters, at most `maxBytes` long.
+  std::string string(const std::string& key, const std::string& fallback, bool required = false,
+                     std::size_t maxBytes = ScenarioLoader::kMaxTextBytes) {
     const json* v = get(key, required);
     if (!v) return fallback;
-    if (!v->is_string() || v->get<std::string>().empty()) {
+    if (!v->is_string() || v->get_ref<const std::string&>().empty()) {
       fail(at(key), "expected a non-empty string, got " + shown(*v));
       return fallback;
     }
-    return v->get<std::string>();
+    const std::string& text = v->get_ref<const std::string&>();
+    if (text.size() > maxBytes) {
+      fail(at(key), "expected at most " + std::to_string(maxBytes) + " bytes, got " + std::to_string(text.size()) +
+                        " (" + shown(*v) + ")");
+      return fallback;
+    }
+    if (const auto why = unprintableProblem(text)) {
+      fail(at(key), "expected printable text, got " + *why + " in " + shown(*v));
+      return fallback;
+    }
+    return text;
   }
 
   bool boolean(const std::string& key, bool fallback) {
@@ -162,7 +186,7 @@ class Fields {
   void finish() {
     if (!valid()) return;
     for (auto it = j_.begin(); it != j_.end(); ++it) {
-      if (!seen_.count(it.key())) fail(at(it.key()), "unknown key '" + it.key() + "'");
+      if (!seen_.count(it.key())) fail(at(it.key()), "unknown key " + quotedName(it.key()));
     }
   }
 
@@ -249,7 +273,7 @@ void choice(Fields& f, const std::string& key, const Enum (&values)[N], Enum& in
     for (std::size_t i = 0; i < N; ++i) {
       expected += (i == 0 ? "" : i + 1 == N ? " or " : ", ") + ("\"" + std::string(toString(values[i])) + "\"");
     }
-    f.fail(f.at(key), "expected " + expected + ", got \"" + name + "\"");
+    f.fail(f.at(key), "expected " + expected + ", got " + shown(*f.get(key, false)));
   }
 }
 
@@ -284,10 +308,6 @@ Settings readSettings(const json& j, std::vector<Problem>& problems) {
   s.legsWhenReachable = f.boolean("legs_when_reachable", s.legsWhenReachable);
   s.floorPairsNearFloor = f.boolean("floor_pairs_near_floor", s.floorPairsNearFloor);
   f.finish();
-  if (f.valid()) {
-    const std::string tooLong = ScenarioLoader::stepCountProblem(s);
-    if (!tooLong.empty()) f.fail("/settings/duration", tooLong);
-  }
   return s;
 }
 
@@ -296,19 +316,21 @@ std::size_t sizeCount(ShapeKind k) {
   return (k == ShapeKind::Cube || k == ShapeKind::Sphere) ? 1 : 3;
 }
 
-EntitySpec readEntity(const json& j, const std::string& path, const std::vector<EntitySpec>& earlier,
+// The entities read so far, by name, so that each lookup costs O(1) and a
+// file of n entities loads in O(n).
+using NameIndex = std::unordered_map<std::string, std::size_t>;
+
+EntitySpec readEntity(const json& j, const std::string& path, const NameIndex& earlier,
                       std::vector<Problem>& problems) {
   EntitySpec e;
   e.path = path;
   Fields f(j, path, problems);
-  e.name = f.string("name", "", true);
-  for (const EntitySpec& other : earlier) {
-    if (!e.name.empty() && other.name == e.name) {
-      f.fail(f.at("name"), "expected a unique name, but '" + e.name + "' is already used");
-    }
+  e.name = f.string("name", "", true, ScenarioLoader::kMaxNameBytes);
+  if (!e.name.empty() && earlier.count(e.name)) {
+    f.fail(f.at("name"), "expected a unique name, but " + quotedName(e.name) + " is already used");
   }
   if (e.name == "table" || e.name == "ground" || e.name == "none") {
-    f.fail(f.at("name"), "'" + e.name + "' is reserved; expected another name");
+    f.fail(f.at("name"), quotedName(e.name) + " is reserved; expected another name");
   }
 
   bool shapeKnown = false;
@@ -318,7 +340,7 @@ EntitySpec readEntity(const json& j, const std::string& path, const std::vector<
       e.shape = *k;
       shapeKnown = true;
     } else {
-      f.fail(f.at("shape"), "expected one of cube, sphere, box, cylinder, got \"" + shape + "\"");
+      f.fail(f.at("shape"), "expected one of cube, sphere, box, cylinder, got " + quotedValue(shape));
     }
   }
 
@@ -343,13 +365,9 @@ EntitySpec readEntity(const json& j, const std::string& path, const std::vector<
       if (e.on.empty()) e.on = "table";
     }
   }
-  if (!e.on.empty() && e.on != "table" && e.on != "ground") {
-    bool found = false;
-    for (const EntitySpec& other : earlier) found = found || other.name == e.on;
-    if (!found) {
-      f.fail(f.at("on"), "expected \"table\", \"ground\" or an entity listed before this one, got \"" +
-                             e.on + "\"");
-    }
+  if (!e.on.empty() && e.on != "table" && e.on != "ground" && !earlier.count(e.on)) {
+    f.fail(f.at("on"), "expected \"table\", \"ground\" or an entity listed before this one, got " +
+                           shown(*f.get("on", false)));
   }
 
   e.yawDegrees = f.number("yaw", kAngle, 0.0);
@@ -370,7 +388,7 @@ EntitySpec readEntity(const json& j, const std::string& path, const std::vector<
   return e;
 }
 
-Action readAction(const json& j, const std::string& path, const std::vector<EntitySpec>& entities,
+Action readAction(const json& j, const std::string& path, const NameIndex& entities,
                   std::vector<Problem>& problems) {
   Action a;
   a.path = path;
@@ -378,11 +396,8 @@ Action readAction(const json& j, const std::string& path, const std::vector<Enti
   if (f.has("t")) a.at = f.number("t", kTime, 0.0);
 
   auto checkEntity = [&](Fields& g, const std::string& name) {
-    if (name.empty()) return;
-    for (const EntitySpec& e : entities) {
-      if (e.name == name) return;
-    }
-    g.fail(g.at("entity"), "expected the name of an entity, got \"" + name + "\"");
+    if (name.empty() || entities.count(name)) return;
+    g.fail(g.at("entity"), "expected the name of an entity, got " + quotedValue(name));
   };
 
   const int kinds = int(f.has("push")) + int(f.has("rotate")) + int(f.has("wait"));
@@ -401,7 +416,7 @@ Action readAction(const json& j, const std::string& path, const std::vector<Enti
       if (auto dir = directionFromString(d)) {
         a.arrow.face = *dir;
       } else if (!d.empty()) {
-        p.fail(p.at("direction"), "expected one of Left, Right, Front, Back, got \"" + d + "\"");
+        p.fail(p.at("direction"), "expected one of Left, Right, Front, Back, got " + quotedValue(d));
       }
     }
     if (byAngle) a.arrow.angleDegrees = p.number("angle", kAngle, 0.0);
@@ -449,6 +464,37 @@ void checkOverTable(const EntitySpec& e, const TableSpec& t, std::vector<Problem
                                                 ", " + number(e.position.z) + "]"});
 }
 
+// Half the footprint of an entity's top along world X and Z: the square
+// that bounds a turned box (as the rules' footprint), a round top's radius.
+std::pair<double, double> topFootprint(const EntitySpec& e) {
+  if (e.size.empty()) return {0.0, 0.0};
+  switch (e.shape) {
+    case ShapeKind::Sphere: return {e.size[0], e.size[0]};
+    case ShapeKind::Cylinder: return {e.size.size() > 1 ? e.size[1] : 0.0, e.size.size() > 1 ? e.size[1] : 0.0};
+    case ShapeKind::Cube:
+    case ShapeKind::SolidBox: break;
+  }
+  const double hx = 0.5 * e.size[0], hz = 0.5 * (e.size.size() > 2 ? e.size[2] : e.size[0]);
+  const double a = e.yawDegrees * M_PI / 180.0;
+  const double c = std::abs(std::cos(a)), s = std::abs(std::sin(a));
+  return {c * hx + s * hz, s * hx + c * hz};
+}
+
+// An entity set on another stands over it: its centre within the other's
+// top. One placed beside its base would be seated at the base's height and
+// float there.
+void checkOverBase(const EntitySpec& e, const EntitySpec& base, std::vector<Problem>& problems) {
+  const auto [hx, hz] = topFootprint(base);
+  const double dx = e.position.x - base.position.x, dz = e.position.z - base.position.z;
+  const bool round = base.shape == ShapeKind::Sphere || base.shape == ShapeKind::Cylinder;
+  const bool over = round ? std::hypot(dx, dz) <= hx : std::abs(dx) <= hx && std::abs(dz) <= hz;
+  if (over) return;
+  problems.push_back({e.path + "/position", "expected a centre over the top of " + quotedName(base.name) +
+                                                " (within " + number(hx) + " m of [" + number(base.position.x) +
+                                                ", " + number(base.position.z) + "]), got [" + number(e.position.x) +
+                                                ", " + number(e.position.z) + "]"});
+}
+
 Scenario read(const json& root, std::vector<Problem>& problems) {
   Scenario s;
   Fields f(root, "", problems);
@@ -459,7 +505,7 @@ Scenario read(const json& root, std::vector<Problem>& problems) {
       f.fail("/version", "expected " + std::to_string(kVersion) + ", got " + shown(*v));
     }
   }
-  s.name = f.string("name", "", true);
+  s.name = f.string("name", "", true, ScenarioLoader::kMaxNameBytes * 2);
   s.description = f.has("description") ? f.string("description", "") : "";
   if (const json* t = f.get("table", false)) s.table = readTable(*t, problems);
   if (const json* st = f.get("settings", false)) s.settings = readSettings(*st, problems);
@@ -469,13 +515,22 @@ Scenario read(const json& root, std::vector<Problem>& problems) {
     gf.finish();
   }
 
+  NameIndex names;
   if (const json* list = f.get("entities", true)) {
     if (!list->is_array() || list->empty()) {
       f.fail("/entities", "expected a non-empty array of entities, got " + shown(*list));
+    } else if (list->size() > ScenarioLoader::kMaxEntities) {
+      f.fail("/entities", "expected at most " + std::to_string(ScenarioLoader::kMaxEntities) + " entities, got " +
+                              std::to_string(list->size()));
     } else {
+      s.entities.reserve(list->size());
       for (std::size_t i = 0; i < list->size(); ++i) {
-        s.entities.push_back(readEntity((*list)[i], "/entities/" + std::to_string(i), s.entities, problems));
-        checkOverTable(s.entities.back(), s.table, problems);
+        EntitySpec e = readEntity((*list)[i], "/entities/" + std::to_string(i), names, problems);
+        checkOverTable(e, s.table, problems);
+        const auto base = names.find(e.on);
+        if (base != names.end()) checkOverBase(e, s.entities[base->second], problems);
+        if (!e.name.empty()) names.emplace(e.name, s.entities.size());
+        s.entities.push_back(std::move(e));
       }
     }
   }
@@ -483,11 +538,14 @@ Scenario read(const json& root, std::vector<Problem>& problems) {
   if (const json* list = f.get("script", false)) {
     if (!list->is_array()) {
       f.fail("/script", "expected an array of actions, got " + shown(*list));
+    } else if (list->size() > ScenarioLoader::kMaxActions) {
+      f.fail("/script", "expected at most " + std::to_string(ScenarioLoader::kMaxActions) + " actions, got " +
+                            std::to_string(list->size()));
     } else {
       double lastTime = 0.0;
       for (std::size_t i = 0; i < list->size(); ++i) {
         const std::string path = "/script/" + std::to_string(i);
-        s.script.push_back(readAction((*list)[i], path, s.entities, problems));
+        s.script.push_back(readAction((*list)[i], path, names, problems));
         if (const auto& at = s.script.back().at) {
           if (*at < lastTime) {
             f.fail(path + "/t", "expected a time not before the previous action's (" +
@@ -503,13 +561,18 @@ Scenario read(const json& root, std::vector<Problem>& problems) {
     }
   }
   f.finish();
+  if (const std::string big = ScenarioLoader::runSizeProblem(s.settings, s.entities.size()); !big.empty()) {
+    f.fail(f.has("settings") ? "/settings/duration" : "/entities", big);
+  }
   return s;
 }
 
-// The 1-based line and column of a byte offset in `text`.
+// The 1-based line and column of a byte offset in `text` (a byte order
+// mark, which the parser skips, is not counted).
 void locate(Problem& p, const std::string& text, std::size_t offset) {
   offset = std::min(offset, text.size());
-  const std::size_t lineStart = offset == 0 ? 0 : text.rfind('\n', offset - 1) + 1;
+  std::size_t lineStart = offset == 0 ? 0 : text.rfind('\n', offset - 1) + 1;
+  if (lineStart == 0 && text.compare(0, 3, "\xEF\xBB\xBF") == 0) lineStart = std::min<std::size_t>(3, offset);
   p.line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + offset, '\n'));
   p.column = static_cast<int>(offset - lineStart) + 1;
 }
@@ -532,32 +595,55 @@ Problem parseProblem(const json::parse_error& e, const std::string& text) {
 }
 
 // Other parser failures (a number too large for a double) give no
-// position; the offending token, which the message quotes, is found instead.
+// position; the offending token, which the message quotes, is found among
+// the text's tokens instead (not in a comment or a string).
 Problem valueProblem(const json::exception& e, const std::string& text) {
   Problem p{"", "not valid JSON: " + reason(e.what())};
   const std::size_t open = p.message.find('\'');
   const std::size_t close = p.message.find('\'', open + 1);
-  if (close != std::string::npos) {
-    const std::size_t at = text.find(p.message.substr(open + 1, close - open - 1));
-    if (at != std::string::npos) locate(p, text, at);
+  if (open != std::string::npos && close != std::string::npos) {
+    const auto where = JsonLocator::findToken(text, p.message.substr(open + 1, close - open - 1));
+    if (where) {
+      p.line = where->line;
+      p.column = where->column;
+    }
   }
   return p;
 }
 
 }  // namespace
 
-std::string ScenarioLoader::stepCountProblem(const Settings& settings) {
+std::string ScenarioLoader::runSizeProblem(const Settings& settings, std::size_t entities) {
   const double steps = std::ceil(settings.duration / settings.timestep);
-  if (steps <= kMaxSteps) return "";
-  return "expected at most " + number(kMaxSteps) + " steps (duration / timestep), got " + number(steps);
+  if (!(steps <= kMaxSteps)) {
+    return "expected at most " + number(kMaxSteps) + " steps (duration / timestep), got " + number(steps);
+  }
+  const double work = steps * settings.maxSubsteps * settings.iterations * static_cast<double>(entities);
+  if (!(work <= kMaxWork)) {
+    return "expected at most " + number(kMaxWork) + " solver work (steps x max_substeps x iterations x entities), got " +
+           number(work) + ": shorten the duration, or lower max_substeps or iterations";
+  }
+  return "";
 }
 
 Scenario ScenarioLoader::loadText(const std::string& text, const std::string& source) {
+  if (text.size() > kMaxFileBytes) {
+    throw ScenarioError(source, {{"", "expected at most " + std::to_string(kMaxFileBytes) + " bytes, got " +
+                                          std::to_string(text.size())}});
+  }
   // nlohmann's parser stops at a NUL byte as at the end of the text, and
   // would accept what comes before it.
   if (const std::size_t nul = text.find('\0'); nul != std::string::npos) {
     Problem p{"", "not valid JSON: expected text, got a NUL byte"};
     locate(p, text, nul);
+    throw ScenarioError(source, {p});
+  }
+  // Deep nesting is refused before anything recurses into it (showing a
+  // value, the locator).
+  if (const auto deep = JsonLocator::tooDeep(text, kMaxDepth)) {
+    Problem p{"", "expected arrays and objects nested at most " + std::to_string(kMaxDepth) + " deep"};
+    p.line = deep->line;
+    p.column = deep->column;
     throw ScenarioError(source, {p});
   }
   json root;
@@ -568,28 +654,37 @@ Scenario ScenarioLoader::loadText(const std::string& text, const std::string& so
   } catch (const json::exception& e) {
     throw ScenarioError(source, {valueProblem(e, text)});
   }
+  auto locator = std::make_shared<const JsonLocator>(text);
   std::vector<Problem> problems;
-  Scenario s = read(root, problems);
-  if (!problems.empty()) {
-    const JsonLocator locator(text);
-    for (Problem& p : problems) {
-      const auto where = locator.find(p.path);
-      p.line = where.line;
-      p.column = where.column;
-    }
-    throw ScenarioError(source, std::move(problems));
+  // The parser keeps the last of two values under one key, silently.
+  for (const JsonLocator::Duplicate& d : locator->duplicates()) {
+    problems.push_back({d.pointer,
+                        "expected each key once in an object, but it was given already at line " +
+                            std::to_string(d.first.line) + ", column " + std::to_string(d.first.column),
+                        d.later.line, d.later.column});
   }
+  Scenario s = read(root, problems);
   s.file = source;
+  s.locator = std::move(locator);
+  if (!problems.empty()) throw ScenarioError(s, std::move(problems));
   return s;
 }
 
 Scenario ScenarioLoader::loadFile(const std::string& path) {
+  // Only a regular file of bounded size is read: not a directory, a device
+  // (/dev/zero never ends) or a pipe.
+  struct stat info {};
+  if (::stat(path.c_str(), &info) != 0) throw ScenarioError(path, {{"", "cannot open the file for reading"}});
+  if (!S_ISREG(info.st_mode)) throw ScenarioError(path, {{"", "expected a regular file"}});
   std::ifstream in(path, std::ios::binary);
   if (!in) throw ScenarioError(path, {{"", "cannot open the file for reading"}});
-  std::ostringstream text;
-  text << in.rdbuf();
+  std::string text;
+  char chunk[1 << 16];
+  while (text.size() <= kMaxFileBytes && (in.read(chunk, sizeof chunk) || in.gcount() > 0)) {
+    text.append(chunk, static_cast<std::size_t>(in.gcount()));
+  }
   if (in.bad()) throw ScenarioError(path, {{"", "cannot read the file"}});
-  return loadText(text.str(), path);
+  return loadText(text, path);
 }
 
 }  // namespace tabletop

@@ -72,7 +72,7 @@ std::unique_ptr<World> buildWorld(const Scenario& scenario, const Settings& sett
                         "expected '" + entity + "' clear of other bodies at the start, but it overlaps " +
                             (rank(other) >= 0 ? "'" + other + "'" : "the " + other)});
   }
-  if (!problems.empty()) throw ScenarioError(scenario.file, std::move(problems));
+  if (!problems.empty()) throw ScenarioError(scenario, std::move(problems));
   return world;
 }
 
@@ -122,7 +122,7 @@ std::unique_ptr<Simulation> buildSimulation(const Scenario& scenario, const Sett
         }
       }
     }
-    if (!moving.empty()) throw ScenarioError(scenario.file, std::move(moving));
+    if (!moving.empty()) throw ScenarioError(scenario, std::move(moving));
   }
   std::unique_ptr<World> world = buildWorld(scenario, settings);
   switch (mode) {

@@ -82,7 +82,7 @@ void ScriptPlayer::carryOut(const Action& action) {
         break;
     }
   } catch (const std::invalid_argument& e) {
-    throw ScenarioError(scenario_.file, {{action.path, std::string("cannot do this action in mode ") +
+    throw ScenarioError(scenario_, {{action.path, std::string("cannot do this action in mode ") +
                                                            std::string(simulation_.modeName()) + ": " +
                                                            e.what()}});
   }

@@ -244,7 +244,32 @@ INSTANTIATE_TEST_SUITE_P(
                    {"name": "B", "shape": "cube", "size": 0.1, "position": [0.3, 0], "mass": 1}]})",
                  "/entities/0/on", "an entity listed before this one"},
         BadInput{"NameMissing", R"({"version": 1, "entities": [{"name": "A", "shape": "cube", "size": 0.1,
-                   "position": [0, 0], "mass": 1}]})", "", "missing required key 'name'"}),
+                   "position": [0, 0], "mass": 1}]})", "", "missing required key 'name'"},
+        // Hostile input: names that would carry a command into a gnuplot
+        // script, colour a terminal, or reverse what it shows.
+        BadInput{"NameWithNewline", entity("").replace(entity("").find("\"A\""), 3, R"x("A\nsystem('touch x')")x"),
+                 "/entities/0/name", "expected printable text, got a control character (U+000A)"},
+        BadInput{"NameWithAnsiEscape", entity("").replace(entity("").find("\"A\""), 3, R"("\u001b[31mA")"),
+                 "/entities/0/name", "a control character (U+001B)"},
+        BadInput{"NameWithBidiOverride", entity("").replace(entity("").find("\"A\""), 3, R"("A\u202eB")"),
+                 "/entities/0/name", "a control character (U+202E)"},
+        BadInput{"NameTooLong", entity("").replace(entity("").find("\"A\""), 3, "\"" + std::string(65, 'n') + "\""),
+                 "/entities/0/name", "expected at most 64 bytes, got 65"},
+        BadInput{"ScenarioNameWithCarriageReturn", R"({"version": 1, "name": "t\r", "entities": [{"name": "A",
+                   "shape": "cube", "size": 0.1, "position": [0, 0], "mass": 1}]})", "/name",
+                 "a control character (U+000D)"},
+        BadInput{"DuplicateKey", R"({"version": 1, "name": "t", "entities": [{"name": "A", "shape": "cube",
+                   "size": 0.1, "position": [0, 0], "mass": 1, "mass": 2}]})", "/entities/0/mass",
+                 "expected each key once in an object, but it was given already at line 2, column 61"},
+        BadInput{"DeepNesting", std::string(100000, '['), "", "expected arrays and objects nested at most 64 deep"},
+        BadInput{"RiderBesideItsBase", R"({"version": 1, "name": "t", "entities": [
+                   {"name": "A", "shape": "cube", "size": 0.1, "position": [0, 0], "mass": 1},
+                   {"name": "B", "shape": "cube", "size": 0.1, "position": [0.3, 0], "on": "A", "mass": 1}]})",
+                 "/entities/1/position", "expected a centre over the top of 'A' (within 0.05 m of [0, 0])"},
+        BadInput{"DaysOfWork", R"({"version": 1, "name": "t", "settings": {"timestep": 1e-5, "duration": 100,
+                   "iterations": 10000, "max_substeps": 1000},
+                   "entities": [{"name": "A", "shape": "cube", "size": 0.1, "position": [0, 0], "mass": 1}]})",
+                 "/settings/duration", "expected at most 1e+11 solver work"}),
     [](const ::testing::TestParamInfo<BadInput>& p) { return p.param.name; });
 
 // Every problem is reported, not only the first, each with its own line.
@@ -260,6 +285,68 @@ TEST(ScenarioLoader, ReportsAllProblemsWithTheirLines) {
     EXPECT_EQ(e.problems()[0].line, 3);
     EXPECT_EQ(e.problems()[1].line, 4);
     EXPECT_EQ(e.lines()[0].rfind("two.json:3:", 0), 0u) << e.lines()[0];
+  }
+}
+
+// Counts are bounded, and a refusal names the bound.
+TEST(ScenarioLoader, RefusesMoreEntitiesThanTheLimit) {
+  std::string text = R"({"version": 1, "name": "t", "table": {"size": [1000, 1000]}, "entities": [)";
+  for (std::size_t i = 0; i <= ScenarioLoader::kMaxEntities; ++i) {
+    text += std::string(i ? "," : "") + R"({"name": "e)" + std::to_string(i) +
+            R"(", "shape": "cube", "size": 0.1, "position": [0, 0], "mass": 1})";
+  }
+  try {
+    ScenarioLoader::loadText(text + "]}", "many.json");
+    FAIL();
+  } catch (const ScenarioError& e) {
+    EXPECT_EQ(e.problems().front().path, "/entities");
+    EXPECT_NE(e.problems().front().message.find("at most 10000 entities, got 10001"), std::string::npos);
+  }
+}
+
+// The first problem's line and column, as the error prints them.
+std::string placeOf(const std::string& text) {
+  try {
+    ScenarioLoader::loadText(text, "f.json");
+  } catch (const ScenarioError& e) {
+    const Problem& p = e.problems().front();
+    return std::to_string(p.line) + ":" + std::to_string(p.column);
+  }
+  return "accepted";
+}
+
+// Places the scan once got wrong: after a byte order mark, a number too
+// large that a comment before it also spells, a key written with escapes.
+TEST(ScenarioLoader, LocatesThroughBomCommentsAndEscapedKeys) {
+  const std::string one = R"({"name": "A", "shape": "cube", "size": 0.1, "position": [0, 0], "mass": -1})";
+  EXPECT_EQ(placeOf("\xEF\xBB\xBF{\"version\": 1, \"name\": \"t\",\n\"entities\": [" + one + "]}"), "2:86");
+  EXPECT_EQ(placeOf("// 1e400\n{\"version\": 1, \"name\": \"t\", \"gravity\": 1e400}"), "2:40");
+  EXPECT_EQ(placeOf("{\"version\": 1, \"name\": \"t\",\n\"entities\": [{\"name\": \"A\", \"shape\": \"cube\",\n"
+                    "\"size\": 0.1, \"position\": [0, 0],\n\"m\\u0061ss\": -1}]}"),
+            "4:14");
+}
+
+// A value or key of any size is shown cut, on one line.
+TEST(ScenarioLoader, ShowsLongValuesCut) {
+  const std::string key(1 << 20, 'k');
+  try {
+    ScenarioLoader::loadText(entity(", \"" + key + "\": 1"), "long.json");
+    FAIL();
+  } catch (const ScenarioError& e) {
+    for (const std::string& line : e.lines()) EXPECT_LT(line.size(), 1200u) << line.substr(0, 200);
+  }
+}
+
+// Only a regular file is read: a directory or a device that never ends
+// is refused before anything is read from it.
+TEST(ScenarioLoader, ReadsOnlyRegularFiles) {
+  for (const char* path : {"/", "/dev/zero"}) {
+    try {
+      ScenarioLoader::loadFile(path);
+      FAIL() << path;
+    } catch (const ScenarioError& e) {
+      EXPECT_NE(e.problems().front().message.find("expected a regular file"), std::string::npos) << e.what();
+    }
   }
 }
 
