@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/GnuplotFile.h"
+#include "app/NumberOption.h"
 #include "app/InterruptGuard.h"
 #include "app/RunCommand.h"
 #include "io/AtomicFile.h"
@@ -166,7 +167,7 @@ void addBenchOptions(CLI::App& command, BenchOptions& options) {
       ->check(CLI::Range(1, 1000));
   command.add_option("--rates", options.rates, "Step rates to sweep, Hz (default 30,60,...,4000)")
       ->delimiter(',')
-      ->check(CLI::Range(1.0 / kMaxTimestep, 1.0 / kMinTimestep));
+      ->check(finiteRange(1.0 / kMaxTimestep, 1.0 / kMinTimestep));
   command.add_option("--iterations", options.iterations, "Solver iterations to sweep (default 4,10,20,50)")
       ->delimiter(',')
       ->check(CLI::Range(1, 10000));

@@ -2,23 +2,45 @@
 
 #include <iostream>
 
+#include "app/GnuplotFile.h"
+#include "app/InterruptGuard.h"
 #include "app/TrajectoryPlot.h"
 #include "scenario/ScenarioError.h"
 #include "sim/ModeComparison.h"
 
 namespace tabletop {
 
+namespace {
+
+// Thrown from a step observer when Ctrl-C or SIGTERM arrived.
+struct Interrupted {};
+
+}  // namespace
+
 int compareScenario(const CompareOptions& options, std::ostream& out, std::ostream& err) {
+  // The plot's name is checked before anything runs.
+  if (options.plot) {
+    if (const std::string problem = plotNameProblem(*options.plot); !problem.empty()) {
+      err << "tabletop compare: --plot: " << problem << "\n";
+      return kExitBadInput;
+    }
+  }
+  const InterruptGuard interrupt;
   const ScenarioSource& source = options.run.scenarios.at(0);
   Comparison comparison;
   Scenario scenario;
   try {
     Settings settings;
     scenario = loadScenario(source, options.run, settings);
-    comparison = compareModes(scenario, settings);
+    comparison = compareModes(scenario, settings, [&interrupt](const Simulation&) {
+      if (interrupt.requested()) throw Interrupted{};
+    });
   } catch (const ScenarioError& e) {
     for (const std::string& line : e.lines()) err << line << "\n";
     return kExitBadInput;
+  } catch (const Interrupted&) {
+    err << "tabletop compare: interrupted; nothing written\n";
+    return kExitInterrupted;
   }
   if (options.run.json) {
     out << comparisonJson(comparison).dump(2) << "\n";
@@ -34,6 +56,10 @@ int compareScenario(const CompareOptions& options, std::ostream& out, std::ostre
   }
   if (options.plot) {
     const std::string problem = writeTrajectoryPlot(comparison, scenario.table, *options.plot);
+    if (interrupt.requested()) {
+      err << "tabletop compare: interrupted; no plot written\n";
+      return kExitInterrupted;
+    }
     if (!problem.empty()) {
       err << "tabletop compare: " << problem << "\n";
       return kExitFailure;

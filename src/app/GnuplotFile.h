@@ -10,7 +10,11 @@ namespace tabletop {
 /// Returns "" or what went wrong, in one line.
 std::string writeGnuplotFile(const std::string& path, const std::string& script, int width, int height);
 
-/// `s` as a gnuplot single-quoted string.
+/// "" when `path` can take a plot (ends in .png or .svg, and is not a
+/// directory or a device), else why not: checked before anything runs.
+std::string plotNameProblem(const std::string& path);
+
+/// `s` as a gnuplot single-quoted string, which cannot carry a command.
 std::string gnuplotQuoted(const std::string& s);
 
 }  // namespace tabletop

@@ -7,11 +7,15 @@
 #include <filesystem>
 #include <iostream>
 #include <limits>
+#include <iomanip>
 #include <regex>
+#include <sstream>
 
 #include <CLI/CLI.hpp>
 
 #include "app/InterruptGuard.h"
+#include "app/NumberOption.h"
+#include "core/Text.h"
 #include "draw/Camera.h"
 #include "draw/SceneDrawing.h"
 #include "headless/OsMesaContext.h"
@@ -30,11 +34,27 @@ constexpr double kTimeSlack = 1e-9;
 // Frames at --fps go on this long after the run has ended, so a looping
 // video rests on the outcome before it starts again.
 constexpr double kHoldSeconds = 0.5;
+// The most frames one render writes.
+constexpr double kMaxFrames = 100000;
 
 std::string stillName(double t) {
-  char name[64];
-  std::snprintf(name, sizeof name, "t_%.3f.png", t);
-  return name;
+  std::ostringstream name;
+  name << "t_" << std::fixed << std::setprecision(3) << t << ".png";
+  return name.str();
+}
+
+// Removes the temporaries of frames and stills that a killed render (a
+// kill cannot be caught) left in `dir`; returns how many.
+int removeKilledTemporaries(const std::filesystem::path& dir) {
+  static const std::regex temporary(R"((frame_[0-9]+|t_[0-9]+\.[0-9]+)\.png\.[A-Za-z0-9]{6}\.part)");
+  int removed = 0;
+  std::error_code ec;
+  for (const auto& f : std::filesystem::directory_iterator(dir, ec)) {
+    if (f.is_regular_file(ec) && std::regex_match(f.path().filename().string(), temporary)) {
+      removed += std::filesystem::remove(f.path(), ec) ? 1 : 0;
+    }
+  }
+  return removed;
 }
 
 std::string frameName(long k) {
@@ -99,10 +119,10 @@ void addRenderOptions(CLI::App& command, RenderOptions& options) {
   command.add_option("--out", options.outDir, "Directory for the PNG frames (made if missing)")->required();
   CLI::Option* at = command.add_option("--at", options.at, "Stills at these simulated times, seconds (T1,T2,...)")
                         ->delimiter(',')
-                        ->check(CLI::NonNegativeNumber);
+                        ->check(finiteRange(0.0, 3600.0));
   CLI::Option* fps =
       command.add_option("--fps", options.fps, "Frames per simulated second, from 0 to the end of the run (default 30)")
-          ->check(CLI::Range(0.1, 1000.0));
+          ->check(finiteRange(0.1, 1000.0));
   at->excludes(fps);
   command.add_option("--size", options.size, "Image size in pixels, WxH (default 960x720)");
   command.add_option("--camera", options.camera, "View: front (the report's), corner, side or top")
@@ -144,15 +164,32 @@ int renderScenario(const RenderOptions& options, std::ostream& out, std::ostream
     return kExitFailure;
   }
 
+  if (options.at.empty() && options.fps * (settings.duration + kHoldSeconds) > kMaxFrames) {
+    err << "tabletop render: --fps: expected at most " << kMaxFrames << " frames (fps x (duration + "
+        << kHoldSeconds << " s)), got " << options.fps * (settings.duration + kHoldSeconds) << "\n";
+    return kExitBadInput;
+  }
+
   std::error_code ec;
   std::filesystem::create_directories(options.outDir, ec);
   if (ec || !std::filesystem::is_directory(options.outDir)) {
-    err << "tabletop render: --out: cannot make the directory '" << options.outDir << "'"
+    err << "tabletop render: --out: cannot make the directory '" << shownText(options.outDir) << "'"
         << (ec ? ": " + ec.message() : std::string()) << "\n";
     return kExitFailure;
   }
 
   const std::filesystem::path dir(options.outDir);
+  if (const int removed = removeKilledTemporaries(dir); removed > 0) {
+    err << "tabletop render: removed " << removed << " temporary " << (removed == 1 ? "file" : "files")
+        << " that a killed render left in " << shownText(options.outDir) << "\n";
+  }
+  // A video that stays beside frames of another run would not show them:
+  // a render that stops early takes the old video away with the old frames.
+  const auto dropOldVideo = [&]() -> std::string {
+    if (!options.video || !std::filesystem::is_regular_file(*options.video, ec)) return "";
+    std::filesystem::remove(*options.video, ec);
+    return "; the old video " + shownText(*options.video) + " was removed with the old frames";
+  };
   long frames = 0;
   const InterruptGuard interrupt;
   try {
@@ -181,7 +218,7 @@ int renderScenario(const RenderOptions& options, std::ostream& out, std::ostream
     return kExitBadInput;
   } catch (const DivergenceError& e) {
     err << scenario.file << ": " << e.what() << "; the " << frames << (frames == 1 ? " frame" : " frames")
-        << " before it in " << options.outDir << "\n";
+        << " before it in " << shownText(options.outDir) << dropOldVideo() << "\n";
     return kExitDiverged;
   } catch (const std::runtime_error& e) {
     err << "tabletop render: " << e.what() << "\n";
@@ -189,7 +226,8 @@ int renderScenario(const RenderOptions& options, std::ostream& out, std::ostream
   }
   if (interrupt.requested()) {
     err << "tabletop render: interrupted after " << frames << (frames == 1 ? " frame" : " frames")
-        << ", each complete, in " << options.outDir << (options.video ? "; no video made" : "") << "\n";
+        << ", each complete, in " << shownText(options.outDir) << (options.video ? "; no video made" : "")
+        << dropOldVideo() << "\n";
     return kExitInterrupted;
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

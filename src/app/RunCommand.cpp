@@ -7,6 +7,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/InterruptGuard.h"
+#include "app/NumberOption.h"
 #include "io/AtomicFile.h"
 #include "scenario/ScenarioError.h"
 #include "scenario/ScenarioLoader.h"
@@ -17,6 +19,27 @@
 #include "sim/TraceWriter.h"
 
 namespace tabletop {
+namespace {
+
+// Thrown from a step observer when Ctrl-C or SIGTERM arrived: it unwinds
+// the run, and every AtomicFile on the way removes its temporary.
+struct Interrupted {};
+
+// A --duration that ends before some of the script's actions: they will
+// not run, which the user may not have meant. One located line each.
+void warnCutScript(const Scenario& scenario, const Settings& settings, std::vector<std::string>& lines) {
+  for (const Action& a : scenario.script) {
+    if (!a.at || *a.at <= settings.duration) continue;
+    std::ostringstream why;
+    why << "warning: the duration (" << settings.duration << " s) ends before this action's time (" << *a.at
+        << " s); it and those after it will not run";
+    std::vector<Problem> p{{a.path + "/t", why.str()}};
+    for (const std::string& line : ScenarioError(scenario, p).lines()) lines.push_back(line);
+    return;
+  }
+}
+
+}  // namespace
 
 void addRunOptions(CLI::App& command, RunOptions& options, bool withMode) {
   command.add_flag("--json", options.json, "Print the outcome as JSON instead of text");
@@ -28,7 +51,7 @@ void addRunOptions(CLI::App& command, RunOptions& options, bool withMode) {
         ->transform(CLI::CheckedTransformer(modes));
   }
   command.add_option("--timestep", options.timestep, "Fixed timestep in seconds (overrides the scenario)")
-      ->check(CLI::Range(kMinTimestep, kMaxTimestep));
+      ->check(finiteRange(kMinTimestep, kMaxTimestep));
   command.add_option("--iterations", options.iterations, "Solver iterations per step (overrides the scenario)")
       ->check(CLI::Range(1, 10000));
   std::map<std::string, Integrator> integrators;
@@ -41,11 +64,11 @@ void addRunOptions(CLI::App& command, RunOptions& options, bool withMode) {
                      "Error in metres to meet: picks the cheapest timestep, iterations and integrator the bench's "
                      "front says meet it for the scene's kinds of motion, and says why (overrides the scenario; "
                      "--timestep, --iterations and --integrator override it)")
-      ->check(CLI::PositiveNumber & CLI::Range(1e-9, 1.0));
+      ->check(finiteRange(1e-9, 1.0));
   command.add_option("--front", options.frontFile,
                      "The front --tolerance reads (default data/tolerance_front.json; made by tabletop bench --front)");
   command.add_option("--duration", options.duration, "Longest simulated time in seconds (overrides the scenario)")
-      ->check(CLI::PositiveNumber & CLI::Range(0.0, 3600.0));
+      ->check(finiteRange(1e-9, 3600.0));
 }
 
 Scenario loadScenario(const ScenarioSource& source, const RunOptions& options, Settings& settings,
@@ -81,32 +104,54 @@ int runScenarios(const RunOptions& options, std::ostream& out, std::ostream& err
     err << "tabletop run: --trace: expected one scenario, got " << options.scenarios.size() << "\n";
     return kExitBadInput;
   }
+  // Where the outputs go is checked before anything runs.
+  for (const auto& [flag, file] : {std::pair{"--out", options.outFile}, std::pair{"--trace", options.traceFile}}) {
+    if (!file) continue;
+    if (const std::string problem = AtomicFile::destinationProblem(*file); !problem.empty()) {
+      err << "tabletop run: " << flag << ": " << problem << "\n";
+      return kExitFailure;
+    }
+  }
+  const InterruptGuard interrupt;
   std::vector<RunResult> results;
   std::vector<std::string> choices;
   bool failed = false;
   std::optional<TraceWriter> trace;
-  for (const ScenarioSource& source : options.scenarios) {
-    try {
-      Settings settings;
-      const Scenario scenario = loadScenario(source, options, settings, &choices);
-      std::unique_ptr<Simulation> simulation = buildSimulation(scenario, settings, options.mode);
-      StepObserver observer;
-      if (options.traceFile) {
-        std::vector<std::string> names;
-        for (const EntitySpec& e : scenario.entities) names.push_back(e.name);
-        trace.emplace(*options.traceFile, std::move(names));
-        if (!trace->problem().empty()) {
-          err << "tabletop run: --trace: " << trace->problem() << "\n";
-          return kExitFailure;
+  try {
+    for (const ScenarioSource& source : options.scenarios) {
+      try {
+        Settings settings;
+        const Scenario scenario = loadScenario(source, options, settings, &choices);
+        std::vector<std::string> warnings;
+        if (options.duration) warnCutScript(scenario, settings, warnings);
+        for (const std::string& line : warnings) err << line << "\n";
+        std::unique_ptr<Simulation> simulation = buildSimulation(scenario, settings, options.mode);
+        StepObserver observer = [&interrupt](const Simulation&) {
+          if (interrupt.requested()) throw Interrupted{};
+        };
+        if (options.traceFile) {
+          std::vector<std::string> names;
+          for (const EntitySpec& e : scenario.entities) names.push_back(e.name);
+          trace.emplace(*options.traceFile, std::move(names), options.traceMaxMegabytes * 1e6);
+          if (!trace->problem().empty()) {
+            err << "tabletop run: --trace: " << trace->problem() << "\n";
+            return kExitFailure;
+          }
+          trace->record(*simulation);
+          observer = [&interrupt, &trace](const Simulation& s) {
+            if (interrupt.requested()) throw Interrupted{};
+            trace->record(s);
+          };
         }
-        trace->record(*simulation);
-        observer = [&trace](const Simulation& s) { trace->record(s); };
+        results.push_back(runScript(scenario, settings, *simulation, observer));
+      } catch (const ScenarioError& e) {
+        for (const std::string& line : e.lines()) err << line << "\n";
+        failed = true;
       }
-      results.push_back(runScript(scenario, settings, *simulation, observer));
-    } catch (const ScenarioError& e) {
-      for (const std::string& line : e.lines()) err << line << "\n";
-      failed = true;
     }
+  } catch (const Interrupted&) {
+    err << "tabletop run: interrupted; nothing written\n";
+    return kExitInterrupted;
   }
   if (failed) return kExitBadInput;
   if (trace) {

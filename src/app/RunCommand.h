@@ -41,6 +41,7 @@ struct RunOptions {
   std::optional<double> duration;
   std::optional<std::string> outFile;  ///< write the output here, whole or not at all
   std::optional<std::string> traceFile;  ///< write every step's motions here (CSV), for one scenario
+  double traceMaxMegabytes = 1024.0;     ///< the largest trace written, MB
   std::optional<double> tolerance;       ///< m: pick the cheapest settings the front says meet it
   std::string frontFile = "data/tolerance_front.json";  ///< where --tolerance reads the front
 };
@@ -60,7 +61,8 @@ Scenario loadScenario(const ScenarioSource& source, const RunOptions& options, S
 /// object for one scenario, an array for several). Problems go to `err`,
 /// one line each, and then nothing is printed to `out`. A run that
 /// diverges is printed marked incomplete, its error goes to `err`, and the
-/// status is kExitDiverged.
+/// status is kExitDiverged. Ctrl-C or SIGTERM stops it between two steps
+/// with kExitInterrupted, leaving no temporary file.
 int runScenarios(const RunOptions& options, std::ostream& out, std::ostream& err);
 
 /// Parses `argv` with CLI11 and runs `command`'s callback; maps --help to

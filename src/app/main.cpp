@@ -7,6 +7,7 @@
 
 #include "app/BenchCommand.h"
 #include "app/CompareCommand.h"
+#include "app/NumberOption.h"
 #include "app/RenderCommand.h"
 #include "app/RunCommand.h"
 #include "app/ViewCommand.h"
@@ -48,6 +49,10 @@ int main(int argc, char** argv) {
   runCommand->add_option("--trace", run.traceFile,
                          "Write every entity's position, orientation and velocities after every step to "
                          "FILE (CSV, SI units; one scenario)");
+  runCommand->add_option("--trace-max-mb", run.traceMaxMegabytes,
+                         "The largest --trace file to write, in MB; a run that would write more writes none "
+                         "(default 1024)")
+      ->check(finiteRange(0.001, 1e6));
   runCommand->callback([&] {
     for (const std::string& f : files) run.scenarios.push_back({f, std::nullopt});
     status = runScenarios(run, std::cout, std::cerr);

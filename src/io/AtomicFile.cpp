@@ -1,28 +1,94 @@
 #include "io/AtomicFile.h"
 
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <vector>
 
 namespace tabletop {
+namespace {
 
-AtomicFile::AtomicFile(std::string path) : path_(std::move(path)), temporary_(path_ + ".part") {}
+// The file a write to `path` really replaces: `path` itself, or the
+// regular file a link there names; "" with `why` set when that is not a
+// regular file.
+std::string resolve(const std::string& path, std::string& why) {
+  struct stat info {};
+  if (::lstat(path.c_str(), &info) != 0) return path;  // a new file
+  if (S_ISLNK(info.st_mode)) {
+    std::error_code ec;
+    const std::filesystem::path target = std::filesystem::canonical(path, ec);
+    if (ec) {
+      why = path + ": is a link to nothing that can be written";
+      return "";
+    }
+    if (::stat(target.c_str(), &info) != 0 || !S_ISREG(info.st_mode)) {
+      why = path + ": is a link to something other than a regular file; refused";
+      return "";
+    }
+    return target.string();
+  }
+  if (!S_ISREG(info.st_mode)) {
+    why = path + (S_ISDIR(info.st_mode) ? ": is a directory; expected a file name" : ": is not a regular file; refused");
+    return "";
+  }
+  return path;
+}
+
+}  // namespace
+
+AtomicFile::AtomicFile(std::string path) : path_(std::move(path)) {
+  target_ = resolve(path_, problem_);
+  if (!problem_.empty()) return;
+  std::vector<char> name(target_.begin(), target_.end());
+  const std::string pattern = ".XXXXXX.part";
+  name.insert(name.end(), pattern.begin(), pattern.end());
+  name.push_back('\0');
+  // mkstemps makes the file new (O_EXCL), readable by its owner only.
+  const int fd = ::mkstemps(name.data(), 5);
+  if (fd < 0) {
+    problem_ = path_ + ": cannot write beside it: " + std::strerror(errno);
+    return;
+  }
+  ::fchmod(fd, 0644);
+  ::close(fd);
+  temporary_ = name.data();
+}
 
 AtomicFile::~AtomicFile() {
-  if (!committed_) std::remove(temporary_.c_str());
+  if (!committed_ && !temporary_.empty()) std::remove(temporary_.c_str());
 }
 
 std::string AtomicFile::commit() {
+  if (!problem_.empty()) return problem_;
+  // What is there now may have changed since the start (a device put in
+  // its place): check again just before replacing it.
+  std::string why;
+  if (resolve(path_, why) != target_) {
+    return why.empty() ? path_ + ": changed while it was written; not replaced" : why;
+  }
   std::error_code ec;
   if (!std::filesystem::is_regular_file(temporary_, ec)) return path_ + ": nothing was written";
-  std::filesystem::rename(temporary_, path_, ec);
+  std::filesystem::rename(temporary_, target_, ec);
   if (ec) return path_ + ": cannot rename into place: " + ec.message();
   committed_ = true;
   return "";
 }
 
+std::string AtomicFile::destinationProblem(const std::string& path) {
+  std::string why;
+  resolve(path, why);
+  return why;
+}
+
 std::string AtomicFile::write(const std::string& path, const std::string& content) {
   AtomicFile file(path);
+  if (!file.problem().empty()) return file.problem();
   {
     std::ofstream out(file.temporaryPath(), std::ios::binary | std::ios::trunc);
     if (!out) return path + ": cannot open for writing";

@@ -76,7 +76,7 @@ std::string verdict(const Vec3& start, const ModeOutcome& rules, const ModeOutco
   return diverges("went sideways");
 }
 
-Comparison compareModes(const Scenario& scenario, const Settings& settings) {
+Comparison compareModes(const Scenario& scenario, const Settings& settings, const StepObserver& afterStep) {
   Comparison c;
   c.scenario = scenario.name;
   c.file = scenario.file;
@@ -92,6 +92,7 @@ Comparison compareModes(const Scenario& scenario, const Settings& settings) {
     record(*sim);
     double next = kSampleInterval;
     c.runs[m] = runScript(scenario, settings, *sim, [&](const Simulation& s) {
+      if (afterStep) afterStep(s);
       if (s.time() + 1e-12 < next) return;
       next += kSampleInterval;
       record(s);

@@ -9,6 +9,7 @@
 #include "core/RunResult.h"
 #include "core/SimulationMode.h"
 #include "scenario/Scenario.h"
+#include "sim/ScriptPlayer.h"
 
 namespace tabletop {
 
@@ -46,8 +47,9 @@ inline constexpr double kAgreeDistance = 1e-3;
 
 /// Runs `scenario` in every mode (recording trajectories) and compares each
 /// entity's outcome with the rules'. Throws ScenarioError if a mode cannot
-/// run the scenario.
-Comparison compareModes(const Scenario& scenario, const Settings& settings);
+/// run the scenario. `afterStep`, when given, sees every mode's simulation
+/// after every step (and may throw to stop the comparison).
+Comparison compareModes(const Scenario& scenario, const Settings& settings, const StepObserver& afterStep = {});
 
 /// Why `other` differs from the rules' outcome for an entity that started at
 /// `start`: "agrees", or "diverges: " and one of: slid off (it left the

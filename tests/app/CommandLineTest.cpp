@@ -22,43 +22,12 @@
 #include "core/ContactSolver.h"
 #include "core/Settings.h"
 #include "image/PngFile.h"
+#include "support/CommandLine.h"
 
 namespace {
 
-struct Outcome {
-  int status = -1;
-  std::string out;
-  std::string err;
-};
+using namespace tabletop::testing;
 
-const std::string kBin = std::string(TABLETOP_BINARY_DIR) + "/src/app/";
-const std::string kScenarios = std::string(TABLETOP_SOURCE_DIR) + "/scenarios/";
-const std::string kData = std::string(TABLETOP_SOURCE_DIR) + "/data/";
-
-// Runs a shell command, capturing stdout, and stderr through a file.
-Outcome run(const std::string& command) {
-  // One file per test process: CTest runs tests in parallel.
-  const std::string errFile = ::testing::TempDir() + "tabletop_stderr_" + std::to_string(getpid()) + ".txt";
-  Outcome o;
-  FILE* pipe = popen((command + " 2>" + errFile).c_str(), "r");
-  if (!pipe) return o;
-  std::array<char, 4096> buffer{};
-  std::size_t n;
-  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) o.out.append(buffer.data(), n);
-  const int raw = pclose(pipe);
-  o.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  std::ifstream in(errFile);
-  o.err.assign(std::istreambuf_iterator<char>(in), {});
-  return o;
-}
-
-std::string writeTemp(const std::string& name, const std::string& text) {
-  const std::string path = ::testing::TempDir() + name;
-  std::ofstream(path) << text;
-  return path;
-}
-
-int lineCount(const std::string& s) { return static_cast<int>(std::count(s.begin(), s.end(), '\n')); }
 
 // The check: the JSON object, with the struck cube dropped and the
 // contact before the drop.
@@ -217,38 +186,6 @@ TEST(CommandLine, OverridesThatAskForTooManyStepsAreStatusTwo) {
 }
 
 // Starts `tabletop ARGS...` in the background, its output in files.
-pid_t start(const std::vector<std::string>& args, const std::string& errFile) {
-  const pid_t pid = fork();
-  if (pid == 0) {
-    const int out = open("/dev/null", O_WRONLY), err = open(errFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    dup2(out, 1);
-    dup2(err, 2);
-    std::vector<char*> argv;
-    const std::string bin = kBin + "tabletop";
-    argv.push_back(const_cast<char*>(bin.c_str()));
-    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    execv(bin.c_str(), argv.data());
-    _exit(127);
-  }
-  return pid;
-}
-
-std::vector<std::string> filesIn(const std::string& dir, const std::string& suffix) {
-  std::vector<std::string> found;
-  std::error_code ec;
-  for (const auto& e : std::filesystem::directory_iterator(dir, ec)) {
-    const std::string name = e.path().filename().string();
-    if (name.size() >= suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0) {
-      found.push_back(e.path().string());
-    }
-  }
-  return found;
-}
-
-// What interruptRender() returns for a process a signal ended.
-constexpr int kKilledBy = 1000;
-
 // Renders example 2 at 400 frames per second (about 850 frames) and
 // signals the render once five frames are there.
 int interruptRender(const std::string& dir, int signal, std::string& err) {
@@ -259,11 +196,10 @@ int interruptRender(const std::string& dir, int signal, std::string& err) {
                           errFile);
   for (int i = 0; i < 6000 && filesIn(dir, ".png").size() < 5; ++i) usleep(10000);
   kill(pid, signal);
-  int raw = 0;
-  waitpid(pid, &raw, 0);
+  const int status = finish(pid);
   std::ifstream in(errFile);
   err.assign(std::istreambuf_iterator<char>(in), {});
-  return WIFEXITED(raw) ? WEXITSTATUS(raw) : kKilledBy + WTERMSIG(raw);
+  return status;
 }
 
 // Ctrl-C stops a long render cleanly: status 130, the frames made so far
@@ -507,7 +443,7 @@ TEST(CommandLine, CompareNamesWhereBulletDivergesAndPlotsIt) {
   EXPECT_EQ(o.status, 0);
   EXPECT_NE(o.out.find("diverges: rotated"), std::string::npos) << o.out;
   o = run(kBin + "tabletop compare " + kScenarios + "misaligned_cubes.json --plot out.jpeg");
-  EXPECT_EQ(o.status, 1);
+  EXPECT_EQ(o.status, 2);
   EXPECT_NE(o.err.find("expected a file name ending in .png or .svg"), std::string::npos) << o.err;
 }
 

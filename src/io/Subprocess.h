@@ -1,0 +1,22 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace tabletop {
+
+/// Runs an external program (gnuplot, ffmpeg) by its argument vector, never
+/// through a shell, so no text it is given can become a command: `input`
+/// on its standard input (through an unnamed temporary file), standard
+/// output and error into `logPath` (or /dev/null when empty). Returns its
+/// exit status, 127 when it could not be started (not installed), or -1
+/// when it was killed by a signal.
+int runProgram(const std::vector<std::string>& args, const std::string& input, const std::string& logPath);
+
+/// Whether `name` is an executable file in one of PATH's directories.
+bool programAvailable(const std::string& name);
+
+/// The last non-empty line of a text file ("" when there is none).
+std::string lastLineOf(const std::string& path);
+
+}  // namespace tabletop
