@@ -457,7 +457,10 @@ int World::substeps() const {
   return parts < settings_.maxSubsteps ? static_cast<int>(std::ceil(parts)) : settings_.maxSubsteps;
 }
 
+// Nothing is judged at rest before the first look at the scene (start()),
+// which sees the starting velocities and what holds each body up.
 bool World::allAtRest() const {
+  if (!started_) return false;
   for (const Tracker& t : trackers_) {
     if (!t.atRest) return false;
   }
@@ -554,7 +557,7 @@ void World::observe(bool emit) {
       tracker.support = support[i];
       shape.setSupport(support[i] == kNoSupport ? "none" : participantName(support[i]));
       if (support[i] != kNoSupport) {
-        if (emit && tracker.lastSupport != kNoSupport && support[i] != tracker.lastSupport) {
+        if (emit && support[i] != tracker.lastSupport) {
           Event e;
           e.t = time_;
           e.type = EventType::Lands;
@@ -584,7 +587,9 @@ void World::observe(bool emit) {
       tracker.quietSince = -1.0;
       tracker.atRest = false;
     } else if (!emit) {
-      tracker.atRest = true;
+      // At the start, a slow body is at rest only where something holds it
+      // up: one placed in mid-air is about to fall.
+      tracker.atRest = support[i] != kNoSupport;
     } else {
       if (tracker.quietSince < 0.0) tracker.quietSince = time_;
       if (!tracker.atRest && time_ - tracker.quietSince >= kRestWindow - 1e-12) {

@@ -13,6 +13,10 @@ namespace {
 constexpr double kLevelSlack = 1e-6;  // m
 // Events at one instant that keep causing each other mean a bug, not a scene.
 constexpr int kMaxEventsPerStep = 100000;
+// A drive that ends this close to an edge ends on it: report 3.4 drops an
+// entity only when its centre is strictly past the edge, so the tie goes
+// to the drive's end, whatever the rounding of the path to it.
+constexpr double kEdgeTie = 1e-9;  // m
 
 bool isZero(const Vec3& v) { return v.x == 0.0 && v.y == 0.0 && v.z == 0.0; }
 
@@ -48,7 +52,15 @@ RuleEngine::RuleEngine(std::string mode, const Settings& settings, const TableSp
       bodies_(std::move(bodies)),
       motion_(bodies_.size()),
       finder_(std::move(finder)),
-      release_(release) {}
+      release_(release) {
+  // An entity placed in mid-air (on nothing) falls from the start.
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    if (bodies_[i].support == kOnNothing) {
+      startFall(i);
+      motion_[i].moving = true;
+    }
+  }
+}
 
 std::size_t RuleEngine::index(const std::string& name) const {
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
@@ -122,14 +134,17 @@ RuleEngine::Next RuleEngine::nextEvent(double horizon) const {
       const double t = drop <= 0.0 ? 0.0 : (std::sqrt(m.fallSpeed * m.fallSpeed + 2.0 * g * drop) - m.fallSpeed) / g;
       consider(make(Next::Kind::Lands, t, i));
     }
-    if (m.phase != Phase::Driven) continue;
+    if (m.phase != Phase::Driven && m.phase != Phase::Clearing) continue;
     const Vec3 v = ownVelocity(i);
-    if (b.support == kOnTable) {
-      // Report 3.4: the centre reaching an edge while moving out.
+    // Report 3.4: the centre reaching an edge while moving out, whether
+    // pushed on the table or sliding off a base beyond it.
+    const bool overTable = (m.phase == Phase::Driven && b.support == kOnTable) ||
+                           (m.phase == Phase::Clearing && b.status == EntityPositionStatus::OnTable);
+    if (overTable) {
       const auto edge = [&](double coord, double speed, double limit, EntityPositionStatus s) {
         if (speed == 0.0) return;
         const double t = (limit - coord) / speed;
-        if (t >= 0.0) {
+        if (t >= 0.0 && t * kDriveSpeed < m.remaining - kEdgeTie) {
           Next e = make(Next::Kind::TableEdge, t, i);
           e.edge = s;
           consider(e);
@@ -139,7 +154,7 @@ RuleEngine::Next RuleEngine::nextEvent(double horizon) const {
       if (v.x < 0.0) edge(b.position.x, v.x, edges_.xLeft, EntityPositionStatus::DropFromLeftEdge);
       if (v.z > 0.0) edge(b.position.z, v.z, edges_.zFront, EntityPositionStatus::DropFromFrontEdge);
       if (v.z < 0.0) edge(b.position.z, v.z, edges_.zBack, EntityPositionStatus::DropFromBackEdge);
-    } else if (b.support >= 0) {
+    } else if (m.phase == Phase::Driven && b.support >= 0) {
       // Report 3.7: a pushed upper entity slides until its centre passes
       // the lower one's edge.
       const RuleBody& base = bodies_[static_cast<std::size_t>(b.support)];
@@ -307,7 +322,8 @@ void RuleEngine::startClearing(std::size_t i, const Vec3& outward) {
   Motion& m = motion_[i];
   const RuleBody& b = bodies_[i];
   const double half = std::abs(outward.x) > 0.0 ? b.footX() : b.footZ();
-  if (m.phase != Phase::Driven || m.direction.dot(outward) <= 0.0) m.direction = outward;
+  const bool moving = m.phase == Phase::Driven || m.phase == Phase::Clearing;
+  if (!moving || m.direction.dot(outward) <= 0.0) m.direction = outward;
   m.phase = Phase::Clearing;
   m.remaining = half / m.direction.dot(outward);
 }

@@ -52,7 +52,8 @@ DivergenceError::DivergenceError(std::string entity, double time, std::string qu
       quantity_(std::move(quantity)) {}
 
 DivergenceGuard::DivergenceGuard(const Scenario& scenario, const Settings& settings,
-                                 const std::vector<BodyMotion>& start) {
+                                 const std::vector<BodyMotion>& start)
+    : table_(scenario.table) {
   for (const EntitySpec& e : scenario.entities) {
     names_.push_back(e.name);
     masses_.push_back(e.mass);
@@ -118,6 +119,15 @@ void DivergenceGuard::check(const std::vector<BodyMotion>& states, double time) 
     }
     if (i < radii_.size() && s.position.y < -radii_[i]) {
       o << "centre at y = " << s.position.y << " m is below the floor: the body has passed through it";
+      fail("position", o.str());
+    }
+    // A centre inside the solid top: the body is passing through it (a
+    // load far heavier than what it stands on pushes that through).
+    const TableSpec& t = table_;
+    if (std::abs(s.position.x - t.centreX) < 0.5 * t.width && std::abs(s.position.z - t.centreZ) < 0.5 * t.depth &&
+        s.position.y < t.height && s.position.y > t.height - t.thickness) {
+      o << "centre at y = " << s.position.y << " m is inside the table top (" << t.height - t.thickness << " to "
+        << t.height << " m): the body is passing through it";
       fail("position", o.str());
     }
     if (s.linearVelocity.length() > vMax) {

@@ -31,7 +31,7 @@ class DivergenceError : public std::runtime_error {
 ///  - position, orientation and velocities are finite, and the centre
 ///    stays within kWorldRadius of the origin and above the floor by more
 ///    than minus the body's bounding radius (a centre further down has
-///    passed through the floor);
+///    passed through the floor), and not inside the table top;
 ///  - speed |v| <= kSafety * sqrt(2 E / m_min) + kSlack, and angular speed
 ///    |w| <= kSafety * sqrt(5) * sqrt(2 E / m_min) / r_min + kSlack / r_min,
 ///    where E is an upper bound on the scene's mechanical energy (the
@@ -71,6 +71,7 @@ class DivergenceGuard {
  private:
   double kineticEnergy(const std::vector<BodyMotion>& states) const;
 
+  TableSpec table_;
   std::vector<std::string> names_;  ///< in scenario order
   std::vector<double> masses_;  ///< kg, in scenario order
   std::vector<double> radii_;   ///< m, bounding radius of each body

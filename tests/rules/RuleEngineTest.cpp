@@ -234,3 +234,54 @@ TEST(RuleEngine, RefusesPushesItCannotCarryOut) {
 
 }  // namespace
 }  // namespace tabletop::rules
+
+namespace tabletop::rules {
+namespace {
+
+// Report 3.4 drops an entity only when its centre is strictly past an
+// edge: a push whose target lies on the edge ends there, on the table,
+// for targets reached by paths that round either way (a cube at x = -0.1
+// pushed 0.7 m ends 1.4e-15 m short of the edge at 0.6, the edge's own
+// time then coming a hair before the drive's end), at every rate, and
+// from each edge.
+TEST(RuleEngine, ATargetExactlyOnAnEdgeStaysOnTheTable) {
+  const TableSpec table;
+  struct Case {
+    double x, z, step;
+    DirectionDef face;
+  };
+  for (const Case& c : {Case{-0.1, 0.0, 0.7, DirectionDef::Left}, Case{0.1, 0.0, 0.7, DirectionDef::Right},
+                        Case{0.0, 0.1, 0.3, DirectionDef::Back}, Case{0.0, 0.3, 0.7, DirectionDef::Front},
+                        Case{0.2 / 3.0, 0.0, 0.6 - 0.2 / 3.0, DirectionDef::Left}}) {
+    for (double rate : {30.0, 60.0, 240.0, 1000.0}) {
+      Settings s;
+      s.timestep = 1.0 / rate;
+      RuleEngine e("rules", s, table, {cube("A", 0.1, c.x, c.z)}, std::make_unique<ReportContactFinder>());
+      push(e, "A", c.face, c.step);
+      runToRest(e);
+      EXPECT_EQ(e.snapshot()[0].status, EntityPositionStatus::OnTable) << c.x << " " << c.step << " at " << rate;
+      EXPECT_NEAR(e.snapshot()[0].position.y, kTop + 0.05, kExact);
+    }
+  }
+}
+
+// A rider pushed off its base, landing past a table edge, leaves the table
+// there: its status and event name the edge, and it ends on the ground.
+TEST(RuleEngine, ARiderSlidingOffItsBasePastTheTableEdgeDrops) {
+  RuleEngine e("rules", Settings{}, TableSpec{},
+               {cube("A", 0.2, 0.47, 0.0), cube("B", 0.1, 0.47, 0.0, 0, kTop + 0.2)},
+               std::make_unique<ReportContactFinder>());
+  push(e, "B", DirectionDef::Left, 0.3);
+  runToRest(e);
+  const std::vector<EntityState> s = e.snapshot();
+  EXPECT_EQ(s[1].status, EntityPositionStatus::FinishDropSimulation);
+  EXPECT_NEAR(s[1].position.y, 0.05, kExact);
+  bool left = false;
+  for (const Event& ev : e.events()) {
+    left = left || (ev.type == EventType::LeavesTable && ev.entity == "B" && ev.edge == "Right");
+  }
+  EXPECT_TRUE(left);
+}
+
+}  // namespace
+}  // namespace tabletop::rules
