@@ -48,32 +48,45 @@ std::string firstEdge(const RunResult& run, const std::string& entity) {
 std::string verdict(const Vec3& start, const ModeOutcome& rules, const ModeOutcome& other) {
   const EntityState& r = rules.state;
   const EntityState& o = other.state;
-  const auto diverges = [](const char* reason) { return std::string("diverges: ") + reason; };
-  if (offTable(r) != offTable(o)) return diverges(offTable(o) ? "slid off" : "stayed behind");
-  if (offTable(r)) return rules.edge == other.edge ? "agrees" : diverges("dropped from another edge");
+  if (offTable(r) != offTable(o)) return std::string("diverges: ") + (offTable(o) ? "slid off" : "stayed behind");
+  if (offTable(r)) return rules.edge == other.edge ? "agrees" : "diverges: dropped from another edge";
+  // Every reason that applies, with how many times its threshold it is.
+  std::vector<std::pair<double, const char*>> reasons;
+  const auto beyond = [&reasons](double amount, double threshold, const char* reason) {
+    if (amount > threshold) reasons.emplace_back(amount / threshold, reason);
+  };
   // A sphere's orientation is no outcome: it rolls.
   if (o.shape != ShapeKind::Sphere) {
-    if (upright(o.orientation) < std::cos(convertAngle(kTippedDegrees))) return diverges("tipped");
-    if (yawDifference(o.yawDegrees, r.yawDegrees) > kRotatedDegrees) return diverges("rotated");
+    const double tilt = std::acos(std::clamp(upright(o.orientation), -1.0, 1.0)) * 180.0 / kPi;
+    beyond(tilt, kTippedDegrees, "tipped");
+    beyond(yawDifference(o.yawDegrees, r.yawDegrees), kRotatedDegrees, "rotated");
   }
-  if (other.fromRules <= kAgreeDistance) return "agrees";
-  const Vec3 ruleMove = r.position - start;
-  const Vec3 move = o.position - start;
-  const double ruleLength = std::hypot(ruleMove.x, ruleMove.z);
-  if (ruleLength > kAgreeDistance) {
-    const Vec3 along = ruleMove * (1.0 / ruleLength);
-    const double ahead = move.x * along.x + move.z * along.z;
-    const double side = std::abs(move.x * along.z - move.z * along.x);
-    // Bounced back: it got further along the rules' line than where it ended.
-    double furthest = ahead;
-    for (const Vec3& p : other.trajectory.points) {
-      furthest = std::max(furthest, (p.x - start.x) * along.x + (p.z - start.z) * along.z);
+  if (other.fromRules > kAgreeDistance) {
+    const Vec3 ruleMove = r.position - start;
+    const Vec3 move = o.position - start;
+    const double ruleLength = std::hypot(ruleMove.x, ruleMove.z);
+    if (ruleLength > kAgreeDistance) {
+      const Vec3 along = ruleMove * (1.0 / ruleLength);
+      const double ahead = move.x * along.x + move.z * along.z;
+      const double side = std::abs(move.x * along.z - move.z * along.x);
+      // Bounced back: it got further along the rules' line than where it ended.
+      double furthest = ahead;
+      for (const Vec3& p : other.trajectory.points) {
+        furthest = std::max(furthest, (p.x - start.x) * along.x + (p.z - start.z) * along.z);
+      }
+      beyond(furthest - ahead, kBackDistance, "bounced back");
+      beyond(side, kAgreeDistance, "went sideways");
+      beyond(std::abs(ahead - ruleLength), kAgreeDistance, ahead < ruleLength ? "stopped short" : "went further");
+    } else {
+      beyond(other.fromRules, kAgreeDistance, "went sideways");
     }
-    if (furthest - ahead > kBackDistance) return diverges("bounced back");
-    if (side > std::abs(ahead - ruleLength)) return diverges("went sideways");
-    return diverges(ahead < ruleLength ? "stopped short" : "went further");
   }
-  return diverges("went sideways");
+  if (reasons.empty()) return "agrees";
+  // The largest first.
+  std::stable_sort(reasons.begin(), reasons.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::string out = "diverges: ";
+  for (std::size_t k = 0; k < reasons.size(); ++k) out += (k ? ", " : "") + std::string(reasons[k].second);
+  return out;
 }
 
 Comparison compareModes(const Scenario& scenario, const Settings& settings, const StepObserver& afterStep) {

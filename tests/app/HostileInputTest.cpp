@@ -166,3 +166,22 @@ TEST(HostileInput, PlotNameIsCheckedFirst) {
 }
 
 }  // namespace
+
+namespace {
+
+using namespace tabletop::testing;
+
+// A load far heavier than what it stands on (1e9 times) pushes it through
+// the table top: the run says so and stops (status 3), rather than report
+// the light cube OnTable inside the top.
+TEST(HostileInput, ABodyPassingThroughTheTableTopIsADivergence) {
+  const std::string file = writeTemp("hostile_heavy.json", R"({"version": 1, "name": "heavy", "entities": [
+    {"name": "L", "shape": "cube", "size": 0.1, "position": [0, 0], "mass": 1e-4},
+    {"name": "H", "shape": "cube", "size": 0.1, "position": [0, 0], "on": "L", "mass": 1e5}]})");
+  const Outcome o = runArgs({"run", file});
+  EXPECT_EQ(o.status, 3) << o.err;
+  EXPECT_NE(o.err.find("entity 'L': centre at y = "), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("is inside the table top"), std::string::npos) << o.err;
+}
+
+}  // namespace

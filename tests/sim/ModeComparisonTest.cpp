@@ -45,7 +45,15 @@ TEST(Verdict, NamesEachReason) {
   EXPECT_EQ(judge(rules, lying), "diverges: tipped");
   ModeOutcome back = at(0.1, 0.0);
   back.trajectory.points = {{0, 0.8, 0}, {0.25, 0.8, 0}, {0.1, 0.8, 0}};
-  EXPECT_EQ(judge(rules, back), "diverges: bounced back");
+  EXPECT_EQ(judge(rules, back), "diverges: stopped short, bounced back");
+  // Every reason that applies, the largest against its threshold first:
+  // 0.2 m short is 200 times the 1 mm agreement, 44 degrees 22 times the
+  // 2 degrees of a rotation.
+  ModeOutcome both = at(0.1, 0.0);
+  both.state.yawDegrees = 44.0;
+  EXPECT_EQ(judge(rules, both), "diverges: stopped short, rotated");
+  both.state.position.x = 0.2995;
+  EXPECT_EQ(judge(rules, both), "diverges: rotated");
 }
 
 Comparison compareFile(const char* file) {
@@ -70,7 +78,8 @@ TEST(PinnedDifference, MisalignedCubesTurnInFullPhysics) {
   EXPECT_DOUBLE_EQ(b.modes[0].state.yawDegrees, 0.0);
   EXPECT_DOUBLE_EQ(b.modes[1].state.yawDegrees, 0.0);
   EXPECT_GT(std::abs(b.modes[2].state.yawDegrees), 10.0);
-  EXPECT_EQ(b.modes[2].verdict, "diverges: rotated");
+  // Every reason that applies, the largest (against its threshold) first.
+  EXPECT_EQ(b.modes[2].verdict, "diverges: stopped short, rotated, went sideways");
 }
 
 // A 20 g sphere strikes a 2 kg one head-on. The rules stop the striker at
@@ -80,7 +89,7 @@ TEST(PinnedDifference, ALightSphereBouncesBackOffAHeavyOne) {
   const Comparison c = compareFile("sphere_bounces_back.json");
   const EntityComparison& light = entity(c, "Light");
   EXPECT_EQ(light.modes[1].verdict, "agrees");
-  EXPECT_EQ(light.modes[2].verdict, "diverges: bounced back");
+  EXPECT_EQ(light.modes[2].verdict, "diverges: stopped short, bounced back");
   EXPECT_LT(light.modes[2].state.position.x, light.modes[0].state.position.x - 0.01);
 }
 
