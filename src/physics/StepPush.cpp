@@ -23,6 +23,10 @@ double rollingDistance(double v0, double mu, double rf, double radius, double gr
 double stepLaunchSpeed(const Shape& shape, double step, const Material& contact, double gravity,
                        double timestep, Integrator integrator) {
   const double mu = contact.friction;
+  if (!(gravity > 0.0)) {
+    throw std::invalid_argument("with no gravity nothing stops a push by step, which would give no impulse; "
+                                "give this push an 'impulse' in N s");
+  }
   if (!(mu > 0.0)) {
     throw std::invalid_argument("entity '" + shape.name() +
                                 "' has no friction with the table, so a push by step never stops");

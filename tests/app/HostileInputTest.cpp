@@ -185,3 +185,25 @@ TEST(HostileInput, ABodyPassingThroughTheTableTopIsADivergence) {
 }
 
 }  // namespace
+
+namespace {
+
+using namespace tabletop::testing;
+
+// With no gravity a push by step would give no impulse: refused at the
+// push's place, in full physics; the rules move it by the step all the same.
+TEST(HostileInput, AStepPushWithoutGravityIsRefusedAtItsPlace) {
+  const std::string file = writeTemp("hostile_nogravity.json", R"({"version": 1, "name": "t",
+    "settings": {"gravity": 0},
+    "entities": [{"name": "A", "shape": "cube", "size": 0.1, "position": [0, 0], "mass": 1}],
+    "script": [{"push": {"entity": "A", "direction": "Left", "step": 0.1}}]})");
+  Outcome o = runArgs({"run", file});
+  EXPECT_EQ(o.status, 2) << o.err;
+  EXPECT_NE(o.err.find(file + ":4:16: at /script/0: cannot do this action in mode bullet: with no gravity"),
+            std::string::npos)
+      << o.err;
+  o = runArgs({"run", file, "--mode", "rules"});
+  EXPECT_EQ(o.status, 0) << o.err;
+}
+
+}  // namespace
