@@ -207,3 +207,25 @@ TEST(HostileInput, AStepPushWithoutGravityIsRefusedAtItsPlace) {
 }
 
 }  // namespace
+
+namespace {
+
+using namespace tabletop::testing;
+
+// Refusals found when the scene is built, not when it is read, are located
+// in the file as the loader's are: an overlap, a starting velocity the
+// rules cannot have.
+TEST(HostileInput, RefusalsAtBuildTimeAreLocated) {
+  const std::string file = writeTemp("hostile_overlap.json", R"({"version": 1, "name": "ov", "entities": [
+ {"name": "A", "shape": "cube", "size": 0.1, "position": [0, 0], "mass": 1},
+ {"name": "B", "shape": "cube", "size": 0.1, "position": [0.05, 0], "mass": 1, "velocity": [1, 0, 0]}]})");
+  Outcome o = runArgs({"run", file});
+  EXPECT_EQ(o.status, 2);
+  EXPECT_EQ(o.err, file + ":3:58: at /entities/1/position: expected 'B' clear of other bodies at the start, "
+                          "but it overlaps 'A'\n");
+  o = runArgs({"run", file, "--mode", "rules"});
+  EXPECT_EQ(o.status, 2);
+  EXPECT_EQ(o.err.rfind(file + ":3:92: at /entities/1/velocity: expected no starting velocity", 0), 0u) << o.err;
+}
+
+}  // namespace
