@@ -1,9 +1,9 @@
-#include "physics/CompatWorld.h"
+#include "compat/CompatWorld.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "physics/GjkContactFinder.h"
+#include "compat/GjkContactFinder.h"
 
 namespace tabletop {
 namespace {

@@ -1,4 +1,4 @@
-#include "physics/GjkContactFinder.h"
+#include "compat/GjkContactFinder.h"
 
 #include <cmath>
 

@@ -67,10 +67,10 @@ btVector3 Table::legCentre(int i) const {
   return btVector3(c.x, c.y, c.z);
 }
 
-rules::TableEdges Table::edges() const { return {xLeft(), xRight(), zBack(), zFront()}; }
+TableEdges Table::edges() const { return {xLeft(), xRight(), zBack(), zFront()}; }
 
 EntityPositionStatus Table::statusAt(double x, double z) const {
-  return rules::dropStatus({x, 0.0, z}, edges());
+  return dropStatus({x, 0.0, z}, edges());
 }
 
 }  // namespace tabletop

@@ -10,7 +10,7 @@
 #include "core/TableSpec.h"
 #include "physics/Cylinder.h"
 #include "physics/SolidBox.h"
-#include "rules/ReportRules.h"
+#include "core/TableEdges.h"
 
 namespace tabletop {
 
@@ -40,9 +40,9 @@ class Table {
   /// Height of the top surface above the ground.
   double topHeight() const { return spec_.height; }
   /// The four edges, as the report's rules take them.
-  rules::TableEdges edges() const;
+  TableEdges edges() const;
 
-  /// The report's drop test (3.4, rules::dropStatus) for a centre at (x, z).
+  /// The report's drop test (3.4, dropStatus) for a centre at (x, z).
   EntityPositionStatus statusAt(double x, double z) const;
 
   const SolidBox& top() const { return *top_; }

@@ -24,14 +24,6 @@ Vec3 stepTarget(const Vec3& centre, double step, double angleDegrees) {
   return centre + pushDirection(angleDegrees) * step;
 }
 
-EntityPositionStatus dropStatus(const Vec3& c, const TableEdges& t) {
-  if (c.x > t.xRight) return EntityPositionStatus::DropFromRightEdge;
-  if (c.x < t.xLeft) return EntityPositionStatus::DropFromLeftEdge;
-  if (c.z > t.zFront) return EntityPositionStatus::DropFromFrontEdge;
-  if (c.z < t.zBack) return EntityPositionStatus::DropFromBackEdge;
-  return EntityPositionStatus::OnTable;
-}
-
 bool aligned(const Boundary& a, const Boundary& b) {
   return contains(a.left, a.right, b.left, b.right) || contains(b.left, b.right, a.left, a.right) ||
          contains(a.far, a.near, b.far, b.near) || contains(b.far, b.near, a.far, a.near);

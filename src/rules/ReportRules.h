@@ -2,6 +2,7 @@
 
 #include "core/Boundary.h"
 #include "core/EntityPositionStatus.h"
+#include "core/TableEdges.h"
 #include "core/Vec3.h"
 
 /// The report's kinematic rules as pure functions (no Bullet, no GL), one
@@ -11,22 +12,9 @@
 /// difference.
 namespace tabletop::rules {
 
-/// The table top's edges (report 3.4): X_L < X_R, Z_B < Z_F.
-struct TableEdges {
-  double xLeft;
-  double xRight;
-  double zBack;
-  double zFront;
-};
-
 /// Report 3.8: where a push of `step` metres at `angleDegrees` moves a
 /// centre: X' = X + Step cos(Angle), Y' = Y, Z' = Z - Step sin(Angle).
 Vec3 stepTarget(const Vec3& centre, double step, double angleDegrees);
-
-/// Report 3.4: OnTable while the centre is within the edges (inclusive),
-/// else DropFrom...Edge for the first edge passed, tested in the order
-/// X > X_R, X < X_L, Z > Z_F, Z < Z_B.
-EntityPositionStatus dropStatus(const Vec3& centre, const TableEdges& table);
 
 /// Report 3.5 (with the erratum on "not alignment"): two cubes are aligned
 /// when one's X extent contains the other's, or one's Z extent contains the

@@ -2,7 +2,7 @@
 
 #include <map>
 
-#include "physics/CompatWorld.h"
+#include "compat/CompatWorld.h"
 #include "physics/Cube.h"
 #include "physics/Cylinder.h"
 #include "physics/Seating.h"

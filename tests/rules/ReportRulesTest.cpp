@@ -24,17 +24,6 @@ TEST(ReportRules, StepTargetFollowsTheAngle) {
   EXPECT_NEAR(back.z, 0.5, kTol);
 }
 
-// Report 3.4: a centre exactly on an edge is still on the table.
-TEST(ReportRules, DropStatusAtEveryEdge) {
-  EXPECT_EQ(dropStatus({0.6, 0, 0.4}, kTable), EntityPositionStatus::OnTable);
-  EXPECT_EQ(dropStatus({-0.6, 0, -0.4}, kTable), EntityPositionStatus::OnTable);
-  EXPECT_EQ(dropStatus({0.6000001, 0, 0}, kTable), EntityPositionStatus::DropFromRightEdge);
-  EXPECT_EQ(dropStatus({-0.6000001, 0, 0}, kTable), EntityPositionStatus::DropFromLeftEdge);
-  EXPECT_EQ(dropStatus({0, 0, 0.4000001}, kTable), EntityPositionStatus::DropFromFrontEdge);
-  EXPECT_EQ(dropStatus({0, 0, -0.4000001}, kTable), EntityPositionStatus::DropFromBackEdge);
-  EXPECT_EQ(dropStatus({0.7, 0, -0.5}, kTable), EntityPositionStatus::DropFromRightEdge);  // X first
-}
-
 // Report 3.5: aligned when one extent contains the other's; the partial
 // overlap of figure 3-7 is not aligned.
 TEST(ReportRules, AlignmentIsContainmentOfAnExtent) {
