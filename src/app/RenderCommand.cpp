@@ -1,5 +1,9 @@
 #include "app/RenderCommand.h"
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -42,6 +46,24 @@ std::string stillName(double t) {
   name << "t_" << std::fixed << std::setprecision(3) << t << ".png";
   return name.str();
 }
+
+// An advisory lock (flock) on a folder, held while the object lives.
+class FolderLock {
+ public:
+  explicit FolderLock(const std::string& dir) : fd_(::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC)) {
+    held_ = fd_ >= 0 && ::flock(fd_, LOCK_EX | LOCK_NB) == 0;
+  }
+  ~FolderLock() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  FolderLock(const FolderLock&) = delete;
+  FolderLock& operator=(const FolderLock&) = delete;
+  bool held() const { return held_; }
+
+ private:
+  int fd_;
+  bool held_ = false;
+};
 
 // Removes the temporaries of frames and stills that a killed render (a
 // kill cannot be caught) left in `dir`; returns how many.
@@ -179,6 +201,14 @@ int renderScenario(const RenderOptions& options, std::ostream& out, std::ostream
   }
 
   const std::filesystem::path dir(options.outDir);
+  // One render at a time writes into a folder: the lock on the folder is
+  // the kernel's, so it goes with a render that is killed, and what is
+  // left then can only be a killed render's.
+  const FolderLock lock(options.outDir);
+  if (!lock.held()) {
+    err << "tabletop render: --out: another render is writing into '" << shownText(options.outDir) << "'\n";
+    return kExitFailure;
+  }
   if (const int removed = removeKilledTemporaries(dir); removed > 0) {
     err << "tabletop render: removed " << removed << " temporary " << (removed == 1 ? "file" : "files")
         << " that a killed render left in " << shownText(options.outDir) << "\n";

@@ -225,7 +225,7 @@ TEST(CommandLine, InterruptedRenderKeepsWholeFramesAndNoTemporaries) {
 }
 
 // A kill cannot be caught: it may leave a temporary file, but never a
-// half-written frame under a frame's name.
+// half-written frame under a frame's name, and the next render clears it.
 TEST(CommandLine, KilledRenderLeavesNoHalfWrittenFrame) {
   const std::string dir = ::testing::TempDir() + "killed_render";
   std::string err;
@@ -233,7 +233,16 @@ TEST(CommandLine, KilledRenderLeavesNoHalfWrittenFrame) {
   const std::vector<std::string> frames = filesIn(dir, ".png");
   EXPECT_GE(frames.size(), 5u);
   for (const std::string& f : frames) EXPECT_NO_THROW(tabletop::readPng(f)) << f;
-  EXPECT_LE(filesIn(dir, ".part").size(), 1u);
+  const std::size_t left = filesIn(dir, ".part").size();
+  EXPECT_LE(left, 1u);
+  // The next render into the folder removes what the killed one left, and
+  // says so.
+  const Outcome o = runArgs({"render", kScenarios + "example1_single_cube.json", "--out", dir, "--at", "0",
+                             "--size", "64x48"});
+  EXPECT_EQ(o.status, 0) << o.err;
+  EXPECT_EQ(o.err.find("removed 1 temporary file that a killed render left") != std::string::npos, left == 1)
+      << o.err;
+  EXPECT_TRUE(filesIn(dir, ".part").empty());
 }
 
 // run --out writes its output whole, or leaves the file as it was.
