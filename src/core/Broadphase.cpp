@@ -3,18 +3,18 @@
 #include "core/EnumNames.h"
 
 namespace tabletop {
+namespace {
 
-std::string_view toString(Broadphase b) {
-  switch (b) {
-    case Broadphase::Dbvt: return "dbvt";
-    case Broadphase::SweepAndPrune: return "sap";
-    case Broadphase::Simple: return "simple";
-  }
-  return "dbvt";
-}
+// The names in scenario files, on the command line and in the output.
+constexpr EnumName<Broadphase> kNames[] = {
+    {Broadphase::Dbvt, "dbvt"},
+    {Broadphase::SweepAndPrune, "sap"},
+    {Broadphase::Simple, "simple"}};
 
-std::optional<Broadphase> broadphaseFromString(std::string_view name) {
-  return enumFromName(name, kAllBroadphases);
-}
+}  // namespace
+
+std::string_view toString(Broadphase b) { return nameOf(b, kNames); }
+
+std::optional<Broadphase> broadphaseFromString(std::string_view name) { return valueNamed(name, kNames); }
 
 }  // namespace tabletop

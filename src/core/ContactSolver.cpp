@@ -3,18 +3,18 @@
 #include "core/EnumNames.h"
 
 namespace tabletop {
+namespace {
 
-std::string_view toString(ContactSolver s) {
-  switch (s) {
-    case ContactSolver::SequentialImpulse: return "sequential_impulse";
-    case ContactSolver::Dantzig: return "dantzig";
-  }
-  return "sequential_impulse";
-}
+// The names in scenario files, on the command line and in the output.
+constexpr EnumName<ContactSolver> kNames[] = {
+    {ContactSolver::SequentialImpulse, "sequential_impulse"},
+    {ContactSolver::Dantzig, "dantzig"}};
 
-std::optional<ContactSolver> contactSolverFromString(std::string_view name) {
-  return enumFromName(name, kAllContactSolvers);
-}
+}  // namespace
+
+std::string_view toString(ContactSolver s) { return nameOf(s, kNames); }
+
+std::optional<ContactSolver> contactSolverFromString(std::string_view name) { return valueNamed(name, kNames); }
 
 std::string describeSolver(ContactSolver s, int iterations) {
   const std::string sweeps = std::to_string(iterations) + " iterations";

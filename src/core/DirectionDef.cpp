@@ -6,22 +6,20 @@
 #include "core/EnumNames.h"
 
 namespace tabletop {
+namespace {
 
-std::string_view toString(DirectionDef d) {
-  switch (d) {
-    case DirectionDef::Left: return "Left";
-    case DirectionDef::Right: return "Right";
-    case DirectionDef::Front: return "Front";
-    case DirectionDef::Back: return "Back";
-  }
-  return "Left";
-}
+// The names in scenario files, on the command line and in the output.
+constexpr EnumName<DirectionDef> kNames[] = {
+    {DirectionDef::Left, "Left"},
+    {DirectionDef::Right, "Right"},
+    {DirectionDef::Front, "Front"},
+    {DirectionDef::Back, "Back"}};
 
-std::optional<DirectionDef> directionFromString(std::string_view name) {
-  constexpr DirectionDef all[] = {DirectionDef::Left, DirectionDef::Right, DirectionDef::Front,
-                                  DirectionDef::Back};
-  return enumFromName(name, all);
-}
+}  // namespace
+
+std::string_view toString(DirectionDef d) { return nameOf(d, kNames); }
+
+std::optional<DirectionDef> directionFromString(std::string_view name) { return valueNamed(name, kNames); }
 
 double directionAngleDegrees(DirectionDef d) {
   switch (d) {

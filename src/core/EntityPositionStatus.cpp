@@ -3,26 +3,22 @@
 #include "core/EnumNames.h"
 
 namespace tabletop {
+namespace {
 
-std::string_view toString(EntityPositionStatus s) {
-  switch (s) {
-    case EntityPositionStatus::OnTable: return "OnTable";
-    case EntityPositionStatus::DropFromLeftEdge: return "DropFromLeftEdge";
-    case EntityPositionStatus::DropFromFrontEdge: return "DropFromFrontEdge";
-    case EntityPositionStatus::DropFromRightEdge: return "DropFromRightEdge";
-    case EntityPositionStatus::DropFromBackEdge: return "DropFromBackEdge";
-    case EntityPositionStatus::FinishDropSimulation: return "FinishDropSimulation";
-  }
-  return "OnTable";
-}
+// The names in scenario files, on the command line and in the output.
+constexpr EnumName<EntityPositionStatus> kNames[] = {
+    {EntityPositionStatus::OnTable, "OnTable"},
+    {EntityPositionStatus::DropFromLeftEdge, "DropFromLeftEdge"},
+    {EntityPositionStatus::DropFromFrontEdge, "DropFromFrontEdge"},
+    {EntityPositionStatus::DropFromRightEdge, "DropFromRightEdge"},
+    {EntityPositionStatus::DropFromBackEdge, "DropFromBackEdge"},
+    {EntityPositionStatus::FinishDropSimulation, "FinishDropSimulation"}};
 
-std::optional<EntityPositionStatus> statusFromString(std::string_view name) {
-  constexpr EntityPositionStatus all[] = {
-      EntityPositionStatus::OnTable,           EntityPositionStatus::DropFromLeftEdge,
-      EntityPositionStatus::DropFromFrontEdge, EntityPositionStatus::DropFromRightEdge,
-      EntityPositionStatus::DropFromBackEdge,  EntityPositionStatus::FinishDropSimulation};
-  return enumFromName(name, all);
-}
+}  // namespace
+
+std::string_view toString(EntityPositionStatus s) { return nameOf(s, kNames); }
+
+std::optional<EntityPositionStatus> statusFromString(std::string_view name) { return valueNamed(name, kNames); }
 
 bool isDropping(EntityPositionStatus s) { return !edgeName(s).empty(); }
 

@@ -1,18 +1,22 @@
 #include "core/Event.h"
 
-namespace tabletop {
+#include "core/EnumNames.h"
 
-const char* toString(EventType t) {
-  switch (t) {
-    case EventType::Push: return "push";
-    case EventType::Rotate: return "rotate";
-    case EventType::ContactBegin: return "contact_begin";
-    case EventType::LeavesTable: return "leaves_table";
-    case EventType::Lands: return "lands";
-    case EventType::AtRest: return "at_rest";
-  }
-  return "push";
-}
+namespace tabletop {
+namespace {
+
+// The names in the output.
+constexpr EnumName<EventType> kNames[] = {
+    {EventType::Push, "push"},
+    {EventType::Rotate, "rotate"},
+    {EventType::ContactBegin, "contact_begin"},
+    {EventType::LeavesTable, "leaves_table"},
+    {EventType::Lands, "lands"},
+    {EventType::AtRest, "at_rest"}};
+
+}  // namespace
+
+const char* toString(EventType t) { return nameOf(t, kNames).data(); }
 
 std::vector<std::string> eventEntities(const Event& e) {
   std::vector<std::string> names{e.entity};

@@ -3,19 +3,19 @@
 #include "core/EnumNames.h"
 
 namespace tabletop {
+namespace {
 
-std::string_view toString(Gyroscopic g) {
-  switch (g) {
-    case Gyroscopic::None: return "none";
-    case Gyroscopic::Explicit: return "explicit";
-    case Gyroscopic::ImplicitWorld: return "implicit_world";
-    case Gyroscopic::ImplicitBody: return "implicit_body";
-  }
-  return "implicit_body";
-}
+// The names in scenario files, on the command line and in the output.
+constexpr EnumName<Gyroscopic> kNames[] = {
+    {Gyroscopic::None, "none"},
+    {Gyroscopic::Explicit, "explicit"},
+    {Gyroscopic::ImplicitWorld, "implicit_world"},
+    {Gyroscopic::ImplicitBody, "implicit_body"}};
 
-std::optional<Gyroscopic> gyroscopicFromString(std::string_view name) {
-  return enumFromName(name, kAllGyroscopics);
-}
+}  // namespace
+
+std::string_view toString(Gyroscopic g) { return nameOf(g, kNames); }
+
+std::optional<Gyroscopic> gyroscopicFromString(std::string_view name) { return valueNamed(name, kNames); }
 
 }  // namespace tabletop

@@ -3,17 +3,17 @@
 #include "core/EnumNames.h"
 
 namespace tabletop {
+namespace {
 
-std::string_view toString(Integrator i) {
-  switch (i) {
-    case Integrator::Euler: return "euler";
-    case Integrator::Trapezoid: return "trapezoid";
-  }
-  return "trapezoid";
-}
+// The names in scenario files, on the command line and in the output.
+constexpr EnumName<Integrator> kNames[] = {
+    {Integrator::Euler, "euler"},
+    {Integrator::Trapezoid, "trapezoid"}};
 
-std::optional<Integrator> integratorFromString(std::string_view name) {
-  return enumFromName(name, kAllIntegrators);
-}
+}  // namespace
+
+std::string_view toString(Integrator i) { return nameOf(i, kNames); }
+
+std::optional<Integrator> integratorFromString(std::string_view name) { return valueNamed(name, kNames); }
 
 }  // namespace tabletop

@@ -3,20 +3,19 @@
 #include "core/EnumNames.h"
 
 namespace tabletop {
+namespace {
 
-std::string_view toString(ShapeKind k) {
-  switch (k) {
-    case ShapeKind::Cube: return "cube";
-    case ShapeKind::Sphere: return "sphere";
-    case ShapeKind::SolidBox: return "box";
-    case ShapeKind::Cylinder: return "cylinder";
-  }
-  return "cube";
-}
+// The names in scenario files, on the command line and in the output.
+constexpr EnumName<ShapeKind> kNames[] = {
+    {ShapeKind::Cube, "cube"},
+    {ShapeKind::Sphere, "sphere"},
+    {ShapeKind::SolidBox, "box"},
+    {ShapeKind::Cylinder, "cylinder"}};
 
-std::optional<ShapeKind> shapeKindFromString(std::string_view name) {
-  constexpr ShapeKind all[] = {ShapeKind::Cube, ShapeKind::Sphere, ShapeKind::SolidBox, ShapeKind::Cylinder};
-  return enumFromName(name, all);
-}
+}  // namespace
+
+std::string_view toString(ShapeKind k) { return nameOf(k, kNames); }
+
+std::optional<ShapeKind> shapeKindFromString(std::string_view name) { return valueNamed(name, kNames); }
 
 }  // namespace tabletop

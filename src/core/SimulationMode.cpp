@@ -3,18 +3,18 @@
 #include "core/EnumNames.h"
 
 namespace tabletop {
+namespace {
 
-std::string_view toString(SimulationMode m) {
-  switch (m) {
-    case SimulationMode::Bullet: return "bullet";
-    case SimulationMode::Compat: return "compat";
-    case SimulationMode::Rules: return "rules";
-  }
-  return "bullet";
-}
+// The names in scenario files, on the command line and in the output.
+constexpr EnumName<SimulationMode> kNames[] = {
+    {SimulationMode::Bullet, "bullet"},
+    {SimulationMode::Compat, "compat"},
+    {SimulationMode::Rules, "rules"}};
 
-std::optional<SimulationMode> simulationModeFromString(std::string_view name) {
-  return enumFromName(name, kAllModes);
-}
+}  // namespace
+
+std::string_view toString(SimulationMode m) { return nameOf(m, kNames); }
+
+std::optional<SimulationMode> simulationModeFromString(std::string_view name) { return valueNamed(name, kNames); }
 
 }  // namespace tabletop
