@@ -1,0 +1,191 @@
+#pragma once
+
+#include <cmath>
+#include <limits>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/EnumNames.h"
+#include "core/Text.h"
+#include "scenario/JsonLocator.h"
+#include "scenario/ScenarioError.h"
+#include "scenario/ScenarioLoader.h"
+
+/// The checked reading of JSON objects that the scenario loader is made
+/// of: ranges of numbers, values shown short in messages, and a reader of
+/// one object that records each problem against its JSON pointer. Private
+/// to the scenario library.
+namespace tabletop::fields {
+
+using nlohmann::json;
+
+// The numbers a field accepts. Every quantity has bounds that keep Bullet
+// meaningful in double precision and a run finite in time: nothing smaller
+// than a millimetre or larger than a kilometre, no mass ratio beyond 1e9, no
+// more than kMaxSteps steps.
+struct Range {
+  double lo;
+  double hi;
+  bool loOpen;  ///< lo itself is refused (a positive quantity)
+};
+
+inline constexpr double kInf = std::numeric_limits<double>::infinity();
+
+/// A number as messages write it (shortest form).
+std::string number(double v);
+/// "a positive number", "a number from 0 to 1", ...
+std::string rangeText(const Range& r);
+/// Finite and within the range.
+bool inRange(double v, const Range& r);
+/// A name as a message quotes it in prose ('A'), cut and escaped.
+std::string quotedName(const std::string& name);
+/// A text as a message echoes a value ("A"), cut and escaped.
+std::string quotedValue(const std::string& text);
+/// A value as a message shows it: short, on one line, whatever its size.
+std::string shown(const json& j);
+
+// Reads one JSON object field by field, recording problems against JSON
+// pointers; finish() reports the keys nobody asked for.
+class Fields {
+ public:
+  Fields(const json& j, std::string path, std::vector<Problem>& problems)
+      : j_(j), path_(std::move(path)), problems_(problems) {
+    if (!j_.is_object()) fail(path_, "expected an object, got " + shown(j_));
+  }
+
+  bool valid() const { return j_.is_object(); }
+  std::string at(const std::string& key) const { return path_ + "/" + escapePointerToken(key); }
+  void fail(const std::string& path, const std::string& message) { problems_.push_back({path, message}); }
+
+  // The raw value of `key`, or null when absent (reported if required).
+  const json* get(const std::string& key, bool required) {
+    seen_.insert(key);
+    if (!valid()) return nullptr;
+    auto it = j_.find(key);
+    if (it == j_.end()) {
+      if (required) fail(path_, "missing required key '" + key + "'");
+      return nullptr;
+    }
+    return &*it;
+  }
+
+  bool has(const std::string& key) const { return valid() && j_.contains(key); }
+
+  double number(const std::string& key, const Range& range, double fallback, bool required = false) {
+    const json* v = get(key, required);
+    if (!v) return fallback;
+    return checkNumber(*v, at(key), range, fallback);
+  }
+
+  double checkNumber(const json& v, const std::string& path, const Range& range, double fallback) {
+    if (!v.is_number() || !inRange(v.get<double>(), range)) {
+      // A sign error is named as such; a wrong magnitude gets the bounds.
+      const bool positive = range.lo > 0.0 || (range.lo == 0.0 && range.loOpen);
+      const bool signWrong = positive && v.is_number() && v.get<double>() <= 0.0;
+      fail(path, "expected " + (signWrong ? std::string("a positive number") : rangeText(range)) + ", got " +
+                     shown(v));
+      return fallback;
+    }
+    return v.get<double>();
+  }
+
+  // A non-empty string of printable characters, at most `maxBytes` long.
+  std::string string(const std::string& key, const std::string& fallback, bool required = false,
+                     std::size_t maxBytes = ScenarioLoader::kMaxTextBytes) {
+    const json* v = get(key, required);
+    if (!v) return fallback;
+    if (!v->is_string() || v->get_ref<const std::string&>().empty()) {
+      fail(at(key), "expected a non-empty string, got " + shown(*v));
+      return fallback;
+    }
+    const std::string& text = v->get_ref<const std::string&>();
+    if (text.size() > maxBytes) {
+      fail(at(key), "expected at most " + std::to_string(maxBytes) + " bytes, got " + std::to_string(text.size()) +
+                        " (" + shown(*v) + ")");
+      return fallback;
+    }
+    if (const auto why = unprintableProblem(text)) {
+      fail(at(key), "expected printable text, got " + *why + " in " + shown(*v));
+      return fallback;
+    }
+    return text;
+  }
+
+  bool boolean(const std::string& key, bool fallback) {
+    const json* v = get(key, false);
+    if (!v) return fallback;
+    if (!v->is_boolean()) {
+      fail(at(key), "expected true or false, got " + shown(*v));
+      return fallback;
+    }
+    return v->get<bool>();
+  }
+
+  // A fixed-length array of numbers; empty on error.
+  std::vector<double> numbers(const json& v, const std::string& path, std::size_t minCount,
+                              std::size_t maxCount, const Range& range) {
+    const std::string what = minCount == maxCount
+                                 ? "an array of " + std::to_string(minCount) + " numbers"
+                                 : "an array of " + std::to_string(minCount) + " to " +
+                                       std::to_string(maxCount) + " numbers";
+    if (!v.is_array() || v.size() < minCount || v.size() > maxCount) {
+      fail(path, "expected " + what + ", got " + shown(v));
+      return {};
+    }
+    std::vector<double> out;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      const std::size_t before = problems_.size();
+      const double x = checkNumber(v[i], path + "/" + std::to_string(i), range, 0.0);
+      if (problems_.size() != before) return {};
+      out.push_back(x);
+    }
+    return out;
+  }
+
+  void finish() {
+    if (!valid()) return;
+    for (auto it = j_.begin(); it != j_.end(); ++it) {
+      if (!seen_.count(it.key())) fail(at(it.key()), "unknown key " + quotedName(it.key()));
+    }
+  }
+
+ private:
+  const json& j_;
+  std::string path_;
+  std::vector<Problem>& problems_;
+  std::set<std::string> seen_;
+};
+
+// A key whose value is one of an enum's names: "expected "a", "b" or
+// "c", got "x"" otherwise.
+template <class Enum, std::size_t N>
+void choice(Fields& f, const std::string& key, const Enum (&values)[N], Enum& into) {
+  if (!f.has(key)) return;
+  const std::string name = f.string(key, "");
+  if (const auto v = enumFromName(name, values)) {
+    into = *v;
+  } else if (!name.empty()) {
+    std::string expected;
+    for (std::size_t i = 0; i < N; ++i) {
+      expected += (i == 0 ? "" : i + 1 == N ? " or " : ", ") + ("\"" + std::string(toString(values[i])) + "\"");
+    }
+    f.fail(f.at(key), "expected " + expected + ", got " + shown(*f.get(key, false)));
+  }
+}
+
+// An optional integer setting from `low` to `high`, into `value`.
+inline void integer(Fields& f, const char* key, int low, int high, int& value) {
+  const json* it = f.get(key, false);
+  if (!it) return;
+  if (!it->is_number_integer() || it->get<long long>() < low || it->get<long long>() > high) {
+    f.fail(f.at(key), "expected an integer from " + std::to_string(low) + " to " + std::to_string(high) + ", got " +
+                          shown(*it));
+  } else {
+    value = it->get<int>();
+  }
+}
+
+}  // namespace tabletop::fields
