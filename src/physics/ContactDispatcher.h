@@ -20,11 +20,10 @@ namespace tabletop {
 ///  - a cylinder against a box or a cylinder gets a whole face contact in
 ///    one step. Bullet's GJK finds one point a step, wandering round the
 ///    rim of a cylinder standing on the table; the manifold keeps four,
-///    and each new one displaced a point that carried part of the load: a
-///    cylinder at rest crept 54 um in 40 s with jolts of up to 7 mm/s.
-///    With Bullet's perturbation (the pair tried at three small turns each
-///    step, its default for multipoint contacts) the rim's points are all
-///    found at once: 1.1 um in 40 s. Spheres are left out (the turns moved
+///    and each new one displaced a point that carried part of the load, so
+///    a cylinder at rest crept. With Bullet's perturbation (the pair tried
+///    at three small turns each step, its default for multipoint contacts)
+///    the rim's points are all found at once (docs/bullet-corrections.md). Spheres are left out (the turns moved
 ///    a rolling ball's points off its lowest point and it sank into the
 ///    table), and so are cones (convex hulls): a cone placed resting on a
 ///    box was then found deeper in it than the 10 um a scene's start

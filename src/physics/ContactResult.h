@@ -15,10 +15,10 @@ namespace tabletop {
 /// one to replace it. The first two want Bullet's 2 cm: a body falling or
 /// sliding fast is caught before it sinks, and a sliding face keeps its
 /// points, and their impulses, from step to step. The third must shrink
-/// with the body: within 2 cm of each other, every corner of a 5 mm cube
-/// replaced every other, so the cube resting on the floor kept one point,
-/// rocked on it and sank 4.8 mm. Half the smallest extent keeps the corners
-/// of any face apart.
+/// with the body: within 2 cm of each other, every corner of a small cube
+/// replaced every other, and it rocked on one point and sank
+/// (docs/bullet-corrections.md). Half the smallest extent keeps the
+/// corners of any face apart.
 ///
 /// The world sets no contact-added or contact-started callbacks, so this
 /// does not call them.

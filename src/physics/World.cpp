@@ -434,12 +434,10 @@ void World::step() {
 // counting both its centre's travel and its farthest point's turn about
 // the centre, and at most Settings::maxSubsteps. A body that moves more
 // than that in one step strikes what it meets part-way into it, at a time
-// of impact that only a shorter step finds: a 2 cm cube at 20 m/s meeting
-// another at 240 Hz kept 14.2 m/s and gave the other 5.7 (the plastic
-// impact gives each 9.98); a 2.7 cm cube landing while spinning at
-// 130 rad/s turns 2.2 rad in a step at 60 Hz, and the corners found at the
-// step's start were not the ones that reached the floor. Slow scenes and
-// bodies at rest are stepped whole.
+// of impact only a shorter step finds, and a body turning fast reaches the
+// floor with corners the step's start did not find
+// (docs/bullet-corrections.md). Slow scenes and bodies at rest are stepped
+// whole.
 int World::substeps() const {
   if (settings_.maxSubsteps <= 1) return 1;
   double parts = 1.0;
