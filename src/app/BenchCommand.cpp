@@ -20,14 +20,14 @@
 #include "io/AtomicFile.h"
 #include "scenario/ScenarioError.h"
 #include "scenario/ScenarioLoader.h"
-#include "sim/Benchmark.h"
-#include "sim/CubeField.h"
-#include "sim/ModelSwitch.h"
+#include "measure/Benchmark.h"
+#include "scenes/CubeField.h"
+#include "measure/ModelSwitch.h"
 #include "sim/ResultFormat.h"
 #include "sim/SceneBuilder.h"
-#include "sim/StabilityProbe.h"
+#include "measure/StabilityProbe.h"
 #include "sim/ScriptRunner.h"
-#include "sim/ToleranceFront.h"
+#include "measure/ToleranceFront.h"
 
 namespace tabletop {
 namespace {

@@ -15,7 +15,7 @@
 #include "sim/ResultFormat.h"
 #include "sim/SceneBuilder.h"
 #include "sim/ScriptRunner.h"
-#include "sim/ToleranceFront.h"
+#include "measure/ToleranceFront.h"
 #include "sim/TraceWriter.h"
 
 namespace tabletop {

@@ -12,7 +12,7 @@
 
 #include "core/StateHash.h"
 #include "scenario/ScenarioLoader.h"
-#include "sim/CubeField.h"
+#include "scenes/CubeField.h"
 #include "sim/DivergenceGuard.h"
 #include "sim/SceneBuilder.h"
 #include "sim/ScriptRunner.h"

@@ -1,7 +1,7 @@
 // The model switches: what each leaves out, and that leaving it out does
 // not change what happens.
 
-#include "sim/ModelSwitch.h"
+#include "measure/ModelSwitch.h"
 
 #include <filesystem>
 #include <string>

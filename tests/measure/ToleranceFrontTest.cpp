@@ -2,7 +2,7 @@
 // front, the front file's errors, and the shipped front against the
 // physics it was measured from.
 
-#include "sim/ToleranceFront.h"
+#include "measure/ToleranceFront.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,7 +13,7 @@
 
 #include "scenario/ScenarioError.h"
 #include "scenario/ScenarioLoader.h"
-#include "sim/AnalyticCase.h"
+#include "measure/AnalyticCase.h"
 
 namespace tabletop {
 namespace {

@@ -6,7 +6,7 @@
 
 #include "core/Settings.h"
 #include "scenario/Scenario.h"
-#include "sim/Benchmark.h"
+#include "measure/Benchmark.h"
 
 namespace tabletop {
 

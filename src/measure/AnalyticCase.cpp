@@ -1,4 +1,4 @@
-#include "sim/AnalyticCase.h"
+#include "measure/AnalyticCase.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "sim/CubeField.h"
+#include "scenes/CubeField.h"
 
 #include <cmath>
 #include <string>

@@ -1,4 +1,4 @@
-#include "sim/RandomScene.h"
+#include "scenes/RandomScene.h"
 
 #include <algorithm>
 #include <cmath>

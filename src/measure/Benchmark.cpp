@@ -1,4 +1,4 @@
-#include "sim/Benchmark.h"
+#include "measure/Benchmark.h"
 
 #include <algorithm>
 #include <cmath>

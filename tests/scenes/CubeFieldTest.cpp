@@ -1,6 +1,6 @@
 // The scale scene: its layout, and that it builds and runs at every size.
 
-#include "sim/CubeField.h"
+#include "scenes/CubeField.h"
 
 #include <cmath>
 

@@ -9,7 +9,7 @@
 #include "core/SimulationMode.h"
 #include "core/Vec3.h"
 #include "scenario/Scenario.h"
-#include "sim/AnalyticCase.h"
+#include "measure/AnalyticCase.h"
 
 namespace tabletop {
 

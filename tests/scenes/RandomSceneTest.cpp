@@ -2,7 +2,7 @@
 // five bodies, each pushed one to four times, run in full physics at the
 // default settings. SI units.
 
-#include "sim/RandomScene.h"
+#include "scenes/RandomScene.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,7 +15,7 @@
 
 #include "physics/World.h"
 #include "sim/SceneBuilder.h"
-#include "sim/StabilityProbe.h"
+#include "measure/StabilityProbe.h"
 
 namespace tabletop {
 namespace {

@@ -1,4 +1,4 @@
-#include "sim/ModelSwitch.h"
+#include "measure/ModelSwitch.h"
 
 namespace tabletop {
 

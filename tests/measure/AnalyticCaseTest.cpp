@@ -5,7 +5,7 @@
 // a falls behind by a t dt / 2; the Euler tests pin that term where it is
 // the whole error, and the trapezoid tests show it gone.
 
-#include "sim/AnalyticCase.h"
+#include "measure/AnalyticCase.h"
 
 #include <cmath>
 #include <string>

@@ -1,7 +1,7 @@
 // The hard cases (scenarios/hard/, README "Hard cases"): each scene run in
 // full physics and judged against its stated threshold, in SI units.
 
-#include "sim/StabilityProbe.h"
+#include "measure/StabilityProbe.h"
 
 #include <algorithm>
 #include <cmath>

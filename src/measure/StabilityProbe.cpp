@@ -1,4 +1,4 @@
-#include "sim/StabilityProbe.h"
+#include "measure/StabilityProbe.h"
 
 #include <algorithm>
 #include <chrono>

@@ -1,4 +1,4 @@
-#include "sim/ToleranceFront.h"
+#include "measure/ToleranceFront.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "scenario/ScenarioError.h"
-#include "sim/AnalyticCase.h"
+#include "measure/AnalyticCase.h"
 
 namespace tabletop {
 namespace {
