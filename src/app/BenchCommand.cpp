@@ -20,6 +20,7 @@
 #include "io/AtomicFile.h"
 #include "scenario/ScenarioError.h"
 #include "scenario/ScenarioLoader.h"
+#include "measure/BenchRuns.h"
 #include "measure/Benchmark.h"
 #include "scenes/CubeField.h"
 #include "measure/ModelSwitch.h"
@@ -46,16 +47,12 @@ std::vector<std::string> defaultScenes(const std::string& dir) {
   return files;
 }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 // A bar on standard error, redrawn in place, when it is a terminal.
 class Progress {
  public:
-  Progress(std::ostream& err, long total) : err_(err), total_(total), shown_(isatty(STDERR_FILENO)) {}
+  explicit Progress(std::ostream& err) : err_(err), shown_(isatty(STDERR_FILENO)) {}
+  void start(long total) { total_ = total; }
   void advance(const std::string& what) {
     ++done_;
     if (!shown_) return;
@@ -69,10 +66,16 @@ class Progress {
 
  private:
   std::ostream& err_;
-  long total_;
+  long total_ = 0;
   long done_ = 0;
   bool shown_;
 };
+
+// What the measuring loops report to a terminal, and how Ctrl-C stops them.
+MeasureHooks hooks(const InterruptGuard& interrupt, Progress& progress) {
+  return {[&interrupt] { return interrupt.requested(); }, [&progress](long total) { progress.start(total); },
+          [&progress](const std::string& done) { progress.advance(done); }};
+}
 
 std::string table(const std::vector<BenchPoint>& points, const std::string& scene, bool analytic) {
   std::ostringstream o;
@@ -196,91 +199,14 @@ void addBenchOptions(CLI::App& command, BenchOptions& options) {
 
 namespace {
 
-// The settings to sweep for `scene` in `mode`: the whole grid in bullet
-// mode; the rates alone in compat and rules, whose rules do not iterate.
-std::vector<Settings> sweep(const BenchOptions& options, const Scenario& scene, SimulationMode mode) {
-  std::vector<Settings> out;
-  for (double rate : options.rates) {
-    Settings s = scene.settings;
-    s.timestep = 1.0 / rate;
-    if (mode != SimulationMode::Bullet) {
-      out.push_back(s);
-      continue;
-    }
-    for (int it : options.iterations) {
-      for (Integrator integrator : options.integrators) {
-        s.iterations = it;
-        s.integrator = integrator;
-        out.push_back(s);
-      }
-    }
-  }
-  return out;
-}
 
-// Whether `scene` runs in `mode` (compat and rules move entities by steps
-// only): the reason it does not, or nothing.
-std::optional<std::string> refusal(const Scenario& scene, SimulationMode mode) {
-  try {
-    Settings quick = scene.settings;
-    quick.duration = quick.timestep;
-    auto simulation = buildSimulation(scene, quick, mode);
-    runScript(scene, quick, *simulation);
-  } catch (const ScenarioError& e) {
-    return e.lines().empty() ? std::string("refused") : e.lines().front();
-  }
-  return std::nullopt;
-}
 
-// Runs `run` `repeats` times after a warm-up (when `warmUp`): the median
-// and spread of the wall milliseconds per simulated second, and the last
-// run.
-struct Timed {
-  double costMs = 0.0;
-  double spread = 0.0;
-  BenchScene::Run last;
-};
-
-template <class RunOnce>
-Timed timed(int repeats, bool warmUp, double timestep, RunOnce runOnce) {
-  Timed t;
-  if (warmUp) runOnce();
-  std::vector<double> costs;
-  bool complete = true;
-  for (int r = 0; r < repeats; ++r) {
-    t.last = runOnce();
-    complete = complete && t.last.complete;
-    costs.push_back(1000.0 * t.last.wallSeconds / std::max(t.last.simSeconds, timestep));
-  }
-  t.last.complete = complete;
-  t.costMs = median(costs);
-  t.spread = (*std::max_element(costs.begin(), costs.end()) - *std::min_element(costs.begin(), costs.end())) / t.costMs;
-  return t;
-}
 
 std::string signedPercent(double ratio) {
   const double p = 100.0 * (ratio - 1.0);
   return (p >= 0 ? "+" : "") + fixed(p, 0) + "%";
 }
 
-std::vector<SwitchPoint> measureSwitches(std::vector<BenchScene>& scenes, int repeats, const InterruptGuard& interrupt,
-                                         std::ostream& err) {
-  std::vector<SwitchPoint> points;
-  long total = 0;
-  for (const BenchScene& scene : scenes) total += static_cast<long>(modelSwitches(scene.scenario().settings).size());
-  Progress progress(err, total);
-  for (BenchScene& scene : scenes) {
-    std::uint64_t defaults = 0;
-    for (const ModelSwitch& m : modelSwitches(scene.scenario().settings)) {
-      if (interrupt.requested()) return points;
-      const Timed t = timed(repeats, true, m.settings.timestep, [&] { return scene.run(m.settings); });
-      if (m.name == "defaults") defaults = t.last.hash;
-      points.push_back({scene.name(), m.name, t.costMs, t.spread, t.last.error, t.last.hash == defaults, t.last.complete});
-      progress.advance(scene.name() + " " + m.name);
-    }
-  }
-  return points;
-}
 
 std::string switchTable(const std::vector<SwitchPoint>& points) {
   std::ostringstream o;
@@ -318,75 +244,8 @@ std::string scaleCsv(const std::vector<ScalePoint>& points) {
   return o.str();
 }
 
-// The simple broadphase compares every pair: past this many cubes a run
-// takes minutes and says nothing new.
-constexpr int kSimpleBroadphaseLimit = 1000;
 
-std::vector<ScalePoint> measureScale(const std::vector<int>& sizes, int repeats, const InterruptGuard& interrupt,
-                                     std::ostream& err) {
-  std::vector<ScalePoint> points;
-  long total = 0;
-  for (int n : sizes) total += static_cast<long>(modelSwitches(CubeField::make(n).settings).size());
-  Progress progress(err, total);
-  for (int n : sizes) {
-    BenchScene field(CubeField::make(n));
-    BenchScene::Run defaults;
-    for (const ModelSwitch& m : modelSwitches(field.scenario().settings)) {
-      if (interrupt.requested()) return points;
-      progress.advance(field.name() + " " + m.name);
-      if (m.settings.broadphase == Broadphase::Simple && n > kSimpleBroadphaseLimit) continue;
-      // Large fields run long enough that a warm-up adds nothing but time.
-      const Timed t = timed(repeats, n < 1000, m.settings.timestep, [&] { return field.measure(m.settings); });
-      if (m.name == "defaults") defaults = t.last;
-      ScalePoint p{n, m.name, t.costMs * m.settings.timestep, t.spread, 0.0, t.last.hash == defaults.hash,
-                   t.last.complete};
-      for (std::size_t i = 0; i < t.last.centres.size() && i < defaults.centres.size(); ++i) {
-        p.difference = std::max(p.difference, (t.last.centres[i] - defaults.centres[i]).length());
-      }
-      points.push_back(p);
-    }
-  }
-  return points;
-}
 
-// The growth exponent of each switch's time per step over the sizes.
-std::map<std::string, double> exponents(const std::vector<ScalePoint>& points) {
-  std::map<std::string, std::pair<std::vector<double>, std::vector<double>>> series;
-  for (const ScalePoint& p : points) {
-    series[p.name].first.push_back(p.cubes);
-    series[p.name].second.push_back(p.msPerStep);
-  }
-  std::map<std::string, double> out;
-  for (const auto& [name, xy] : series) {
-    if (xy.first.size() >= 2) out[name] = growthExponent(xy.first, xy.second);
-  }
-  return out;
-}
-
-// One hard case, run once (README, "Hard cases").
-struct HardPoint {
-  std::string scene;
-  Settings settings;
-  StabilityReport report;
-};
-
-std::vector<HardPoint> measureHard(const std::string& dir, const InterruptGuard& interrupt, std::ostream& err) {
-  std::vector<std::string> files;
-  std::error_code ec;
-  for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
-    if (entry.path().extension() == ".json") files.push_back(entry.path().string());
-  }
-  std::sort(files.begin(), files.end());
-  std::vector<HardPoint> points;
-  Progress progress(err, static_cast<long>(files.size()));
-  for (const std::string& file : files) {
-    if (interrupt.requested()) break;
-    const Scenario s = ScenarioLoader::loadFile(file);
-    points.push_back({s.name, s.settings, probeStability(s, s.settings)});
-    progress.advance(s.name);
-  }
-  return points;
-}
 
 nlohmann::json hardJson(const HardPoint& p) {
   const StabilityReport& r = p.report;
@@ -484,52 +343,30 @@ int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) 
   }
 
   const bool sweepAsked = options.sweep || (!options.switches && options.scale.empty() && !options.hard);
+  const SweepGrid grid{options.rates, options.iterations, options.integrators};
   const InterruptGuard interrupt;
   std::vector<BenchPoint> points;
   std::map<std::string, std::vector<std::string>> skipped;  // per scene, a line per mode it cannot run in
   if (sweepAsked) {
-    std::vector<std::pair<BenchScene*, SimulationMode>> jobs;
-    long total = 0;
-    for (BenchScene& scene : scenes) {
-      for (SimulationMode mode : options.modes) {
-        if (const auto why = refusal(scene.scenario(), mode)) {
-          skipped[scene.name()].push_back("not in mode " + std::string(toString(mode)) + ": " + *why);
-          continue;
-        }
-        jobs.emplace_back(&scene, mode);
-        total += static_cast<long>(sweep(options, scene.scenario(), mode).size());
-      }
-    }
-    Progress progress(err, total);
-    for (const auto& [scene, mode] : jobs) {
-      for (const Settings& settings : sweep(options, scene->scenario(), mode)) {
-        if (interrupt.requested()) break;
-        // The warm-up also makes the reference run, once per scene.
-        const Timed t = timed(options.repeats, true, settings.timestep, [&, scene = scene, mode = mode] {
-          return scene->run(settings, mode);
-        });
-        BenchPoint p{scene->name(), settings.timestep, settings.iterations, settings.integrator, mode};
-        p.costMs = t.costMs;
-        p.spread = t.spread;
-        p.error = t.last.error;
-        p.complete = t.last.complete;
-        points.push_back(p);
-        progress.advance(scene->name() + " " + std::string(toString(mode)) + " " + fixed(1.0 / settings.timestep, 0) +
-                         " Hz");
-      }
-    }
+    Progress progress(err);
+    points = measureSweep(scenes, grid, options.modes, options.repeats, hooks(interrupt, progress), skipped);
   }
   markParetoFronts(points);
   std::vector<SwitchPoint> switchPoints;
-  if (options.switches && !interrupt.requested()) switchPoints = measureSwitches(scenes, options.repeats, interrupt, err);
+  if (options.switches && !interrupt.requested()) {
+    Progress progress(err);
+    switchPoints = measureSwitches(scenes, options.repeats, hooks(interrupt, progress));
+  }
   std::vector<ScalePoint> scalePoints;
   if (!options.scale.empty() && !interrupt.requested()) {
-    scalePoints = measureScale(options.scale, options.repeats, interrupt, err);
+    Progress progress(err);
+    scalePoints = measureScale(options.scale, options.repeats, hooks(interrupt, progress));
   }
   std::vector<HardPoint> hardPoints;
   if (options.hard && !interrupt.requested()) {
     try {
-      hardPoints = measureHard((std::filesystem::path(options.scenarioDir) / "hard").string(), interrupt, err);
+      Progress progress(err);
+      hardPoints = measureHard((std::filesystem::path(options.scenarioDir) / "hard").string(), hooks(interrupt, progress));
     } catch (const ScenarioError& e) {
       for (const std::string& line : e.lines()) err << line << "\n";
       return kExitBadInput;

@@ -1,0 +1,205 @@
+#include "measure/BenchRuns.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <sstream>
+
+#include "core/Broadphase.h"
+#include "measure/ModelSwitch.h"
+#include "scenario/ScenarioError.h"
+#include "scenario/ScenarioLoader.h"
+#include "scenes/CubeField.h"
+#include "sim/ResultFormat.h"
+#include "sim/SceneBuilder.h"
+#include "sim/ScriptRunner.h"
+
+namespace tabletop {
+namespace {
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+// The settings to sweep for `scene` in `mode`: the whole grid in bullet
+// mode; the rates alone in compat and rules, whose rules do not iterate.
+std::vector<Settings> sweep(const SweepGrid& grid, const Scenario& scene, SimulationMode mode) {
+  std::vector<Settings> out;
+  for (double rate : grid.rates) {
+    Settings s = scene.settings;
+    s.timestep = 1.0 / rate;
+    if (mode != SimulationMode::Bullet) {
+      out.push_back(s);
+      continue;
+    }
+    for (int it : grid.iterations) {
+      for (Integrator integrator : grid.integrators) {
+        s.iterations = it;
+        s.integrator = integrator;
+        out.push_back(s);
+      }
+    }
+  }
+  return out;
+}
+
+// Whether `scene` runs in `mode` (compat and rules move entities by steps
+// only): the reason it does not, or nothing.
+std::optional<std::string> refusal(const Scenario& scene, SimulationMode mode) {
+  try {
+    Settings quick = scene.settings;
+    quick.duration = quick.timestep;
+    auto simulation = buildSimulation(scene, quick, mode);
+    runScript(scene, quick, *simulation);
+  } catch (const ScenarioError& e) {
+    return e.lines().empty() ? std::string("refused") : e.lines().front();
+  }
+  return std::nullopt;
+}
+
+// Runs `run` `repeats` times after a warm-up (when `warmUp`): the median
+// and spread of the wall milliseconds per simulated second, and the last
+// run.
+struct Timed {
+  double costMs = 0.0;
+  double spread = 0.0;
+  BenchScene::Run last;
+};
+
+template <class RunOnce>
+Timed timed(int repeats, bool warmUp, double timestep, RunOnce runOnce) {
+  Timed t;
+  if (warmUp) runOnce();
+  std::vector<double> costs;
+  bool complete = true;
+  for (int r = 0; r < repeats; ++r) {
+    t.last = runOnce();
+    complete = complete && t.last.complete;
+    costs.push_back(1000.0 * t.last.wallSeconds / std::max(t.last.simSeconds, timestep));
+  }
+  t.last.complete = complete;
+  t.costMs = median(costs);
+  t.spread = (*std::max_element(costs.begin(), costs.end()) - *std::min_element(costs.begin(), costs.end())) / t.costMs;
+  return t;
+}
+
+}  // namespace
+
+std::vector<BenchPoint> measureSweep(std::vector<BenchScene>& scenes, const SweepGrid& grid,
+                                     const std::vector<SimulationMode>& modes, int repeats, const MeasureHooks& hooks,
+                                     std::map<std::string, std::vector<std::string>>& skipped) {
+  std::vector<std::pair<BenchScene*, SimulationMode>> jobs;
+  long total = 0;
+  for (BenchScene& scene : scenes) {
+    for (SimulationMode mode : modes) {
+      if (const auto why = refusal(scene.scenario(), mode)) {
+        skipped[scene.name()].push_back("not in mode " + std::string(toString(mode)) + ": " + *why);
+        continue;
+      }
+      jobs.emplace_back(&scene, mode);
+      total += static_cast<long>(sweep(grid, scene.scenario(), mode).size());
+    }
+  }
+  hooks.start(total);
+  std::vector<BenchPoint> points;
+  for (const auto& [scene, mode] : jobs) {
+    for (const Settings& settings : sweep(grid, scene->scenario(), mode)) {
+      if (hooks.stop()) return points;
+      // The warm-up also makes the reference run, once per scene.
+      const Timed t = timed(repeats, true, settings.timestep, [&, scene = scene, mode = mode] {
+        return scene->run(settings, mode);
+      });
+      BenchPoint p{scene->name(), settings.timestep, settings.iterations, settings.integrator, mode};
+      p.costMs = t.costMs;
+      p.spread = t.spread;
+      p.error = t.last.error;
+      p.complete = t.last.complete;
+      points.push_back(p);
+      hooks.advance(scene->name() + " " + std::string(toString(mode)) + " " + fixed(1.0 / settings.timestep, 0) +
+                    " Hz");
+    }
+  }
+  return points;
+}
+
+std::vector<SwitchPoint> measureSwitches(std::vector<BenchScene>& scenes, int repeats, const MeasureHooks& hooks) {
+  std::vector<SwitchPoint> points;
+  long total = 0;
+  for (const BenchScene& scene : scenes) total += static_cast<long>(modelSwitches(scene.scenario().settings).size());
+  hooks.start(total);
+  for (BenchScene& scene : scenes) {
+    std::uint64_t defaults = 0;
+    for (const ModelSwitch& m : modelSwitches(scene.scenario().settings)) {
+      if (hooks.stop()) return points;
+      const Timed t = timed(repeats, true, m.settings.timestep, [&] { return scene.run(m.settings); });
+      if (m.name == "defaults") defaults = t.last.hash;
+      points.push_back({scene.name(), m.name, t.costMs, t.spread, t.last.error, t.last.hash == defaults, t.last.complete});
+      hooks.advance(scene.name() + " " + m.name);
+    }
+  }
+  return points;
+}
+
+// The simple broadphase compares every pair: past this many cubes a run
+// takes minutes and says nothing new.
+constexpr int kSimpleBroadphaseLimit = 1000;
+
+std::vector<ScalePoint> measureScale(const std::vector<int>& sizes, int repeats, const MeasureHooks& hooks) {
+  std::vector<ScalePoint> points;
+  long total = 0;
+  for (int n : sizes) total += static_cast<long>(modelSwitches(CubeField::make(n).settings).size());
+  hooks.start(total);
+  for (int n : sizes) {
+    BenchScene field(CubeField::make(n));
+    BenchScene::Run defaults;
+    for (const ModelSwitch& m : modelSwitches(field.scenario().settings)) {
+      if (hooks.stop()) return points;
+      hooks.advance(field.name() + " " + m.name);
+      if (m.settings.broadphase == Broadphase::Simple && n > kSimpleBroadphaseLimit) continue;
+      // Large fields run long enough that a warm-up adds nothing but time.
+      const Timed t = timed(repeats, n < 1000, m.settings.timestep, [&] { return field.measure(m.settings); });
+      if (m.name == "defaults") defaults = t.last;
+      ScalePoint p{n, m.name, t.costMs * m.settings.timestep, t.spread, 0.0, t.last.hash == defaults.hash,
+                   t.last.complete};
+      for (std::size_t i = 0; i < t.last.centres.size() && i < defaults.centres.size(); ++i) {
+        p.difference = std::max(p.difference, (t.last.centres[i] - defaults.centres[i]).length());
+      }
+      points.push_back(p);
+    }
+  }
+  return points;
+}
+
+std::map<std::string, double> exponents(const std::vector<ScalePoint>& points) {
+  std::map<std::string, std::pair<std::vector<double>, std::vector<double>>> series;
+  for (const ScalePoint& p : points) {
+    series[p.name].first.push_back(p.cubes);
+    series[p.name].second.push_back(p.msPerStep);
+  }
+  std::map<std::string, double> out;
+  for (const auto& [name, xy] : series) {
+    if (xy.first.size() >= 2) out[name] = growthExponent(xy.first, xy.second);
+  }
+  return out;
+}
+
+std::vector<HardPoint> measureHard(const std::string& dir, const MeasureHooks& hooks) {
+  std::vector<std::string> files;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+    if (entry.path().extension() == ".json") files.push_back(entry.path().string());
+  }
+  std::sort(files.begin(), files.end());
+  std::vector<HardPoint> points;
+  hooks.start(static_cast<long>(files.size()));
+  for (const std::string& file : files) {
+    if (hooks.stop()) break;
+    const Scenario s = ScenarioLoader::loadFile(file);
+    points.push_back({s.name, s.settings, probeStability(s, s.settings)});
+    hooks.advance(s.name);
+  }
+  return points;
+}
+
+}  // namespace tabletop

@@ -1,0 +1,63 @@
+#pragma once
+
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/Integrator.h"
+#include "core/Settings.h"
+#include "core/SimulationMode.h"
+#include "measure/Benchmark.h"
+#include "measure/StabilityProbe.h"
+#include "scenario/Scenario.h"
+
+namespace tabletop {
+
+/// How a long measurement reports its progress and is stopped: `stop` is
+/// asked before each unit of work, `start` told how many there are,
+/// `advance` told of each one done. The defaults do nothing, so a test or
+/// the Python module can measure without a terminal.
+struct MeasureHooks {
+  std::function<bool()> stop = [] { return false; };
+  std::function<void(long total)> start = [](long) {};
+  std::function<void(const std::string& done)> advance = [](const std::string&) {};
+};
+
+/// The settings `bench` sweeps: every rate, and in full physics every
+/// iteration count and integrator too.
+struct SweepGrid {
+  std::vector<double> rates;  ///< Hz
+  std::vector<int> iterations;
+  std::vector<Integrator> integrators;
+};
+
+/// Sweeps every scene in every mode of `modes` over the grid: each setting
+/// timed `repeats` times after a warm-up. A mode a scene cannot run in is
+/// skipped, with why, in `skipped` (per scene).
+std::vector<BenchPoint> measureSweep(std::vector<BenchScene>& scenes, const SweepGrid& grid,
+                                     const std::vector<SimulationMode>& modes, int repeats, const MeasureHooks& hooks,
+                                     std::map<std::string, std::vector<std::string>>& skipped);
+
+/// Each model switch (ModelSwitch) on every scene at its own settings.
+std::vector<SwitchPoint> measureSwitches(std::vector<BenchScene>& scenes, int repeats, const MeasureHooks& hooks);
+
+/// The cube field (CubeField) of each size with each switch.
+std::vector<ScalePoint> measureScale(const std::vector<int>& sizes, int repeats, const MeasureHooks& hooks);
+
+/// The growth exponent of each switch's time per step over the sizes.
+std::map<std::string, double> exponents(const std::vector<ScalePoint>& points);
+
+/// One hard case, run once (README, "Hard cases").
+struct HardPoint {
+  std::string scene;
+  Settings settings;
+  StabilityReport report;
+};
+
+/// Every scene in the folder `dir` (its .json files, by name) run once
+/// and probed for stability. Throws ScenarioError for a bad file.
+std::vector<HardPoint> measureHard(const std::string& dir, const MeasureHooks& hooks);
+
+}  // namespace tabletop
