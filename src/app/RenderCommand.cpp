@@ -68,11 +68,16 @@ class FolderLock {
 // Removes the temporaries of frames and stills that a killed render (a
 // kill cannot be caught) left in `dir`; returns how many.
 int removeKilledTemporaries(const std::filesystem::path& dir) {
-  static const std::regex temporary(R"((frame_[0-9]+|t_[0-9]+\.[0-9]+)\.png\.[A-Za-z0-9]{6}\.part)");
+  // A frame's or still's temporary: "frame_00012.png.XXXXXX.part", "t_0.500.png.XXXXXX.part".
+  const auto isTemporary = [](const std::string& name) {
+    const std::size_t png = name.find(".png.");
+    return (name.rfind("frame_", 0) == 0 || name.rfind("t_", 0) == 0) && png != std::string::npos &&
+           name.size() == png + 5 + 6 + 5 && endsWith(name, ".part");
+  };
   int removed = 0;
   std::error_code ec;
   for (const auto& f : std::filesystem::directory_iterator(dir, ec)) {
-    if (f.is_regular_file(ec) && std::regex_match(f.path().filename().string(), temporary)) {
+    if (f.is_regular_file(ec) && isTemporary(f.path().filename().string())) {
       removed += std::filesystem::remove(f.path(), ec) ? 1 : 0;
     }
   }
