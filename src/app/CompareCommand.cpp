@@ -30,9 +30,8 @@ int compareScenario(const CompareOptions& options, std::ostream& out, std::ostre
   Comparison comparison;
   Scenario scenario;
   try {
-    Settings settings;
-    scenario = loadScenario(source, options.run, settings);
-    comparison = compareModes(scenario, settings, [&interrupt](const Simulation&) {
+    scenario = loadScenario(source, options.run);
+    comparison = compareModes(scenario, scenario.settings, [&interrupt](const Simulation&) {
       if (interrupt.requested()) throw Interrupted{};
     });
   } catch (const ScenarioError& e) {

@@ -176,12 +176,11 @@ int renderScenario(const RenderOptions& options, std::ostream& out, std::ostream
   // The scene and the context come first: a bad scene is refused before
   // any directory or file is made.
   const auto start = std::chrono::steady_clock::now();
-  Settings settings;
   Scenario scenario;
   std::unique_ptr<FrameMaker> maker;
   try {
-    scenario = loadScenario(options.run.scenarios.front(), options.run, settings);
-    maker = std::make_unique<FrameMaker>(scenario, settings, options, *Camera::named(options.camera, scenario.table),
+    scenario = loadScenario(options.run.scenarios.front(), options.run);
+    maker = std::make_unique<FrameMaker>(scenario, scenario.settings, options, *Camera::named(options.camera, scenario.table),
                                          size->first, size->second);
   } catch (const ScenarioError& e) {
     for (const std::string& line : e.lines()) err << line << "\n";
@@ -191,6 +190,7 @@ int renderScenario(const RenderOptions& options, std::ostream& out, std::ostream
     return kExitFailure;
   }
 
+  const Settings& settings = scenario.settings;
   if (options.at.empty() && options.fps * (settings.duration + kHoldSeconds) > kMaxFrames) {
     err << "tabletop render: --fps: expected at most " << kMaxFrames << " frames (fps x (duration + "
         << kHoldSeconds << " s)), got " << options.fps * (settings.duration + kHoldSeconds) << "\n";

@@ -71,11 +71,11 @@ void addRunOptions(CLI::App& command, RunOptions& options, bool withMode) {
       ->check(finiteRange(1e-9, 3600.0));
 }
 
-Scenario loadScenario(const ScenarioSource& source, const RunOptions& options, Settings& settings,
+Scenario loadScenario(const ScenarioSource& source, const RunOptions& options,
                       std::vector<std::string>* choiceLines) {
   Scenario scenario = source.text ? ScenarioLoader::loadText(*source.text, source.name)
                                   : ScenarioLoader::loadFile(source.name);
-  settings = scenario.settings;
+  Settings& settings = scenario.settings;
   if (options.tolerance) {
     const ToleranceChoice choice = ToleranceFront::load(options.frontFile).choose(scenario, *options.tolerance);
     settings = choice.settings;
@@ -120,8 +120,8 @@ int runScenarios(const RunOptions& options, std::ostream& out, std::ostream& err
   try {
     for (const ScenarioSource& source : options.scenarios) {
       try {
-        Settings settings;
-        const Scenario scenario = loadScenario(source, options, settings, &choices);
+        const Scenario scenario = loadScenario(source, options, &choices);
+        const Settings& settings = scenario.settings;
         std::vector<std::string> warnings;
         if (options.duration) warnCutScript(scenario, settings, warnings);
         for (const std::string& line : warnings) err << line << "\n";

@@ -50,11 +50,12 @@ struct RunOptions {
 /// `withMode`, also --mode.
 void addRunOptions(CLI::App& command, RunOptions& options, bool withMode = true);
 
-/// Reads a scenario and applies the command line's overrides to its
-/// settings: first --tolerance (what it chose and why, a line each, goes
-/// to `choiceLines` if given), then --timestep, --iterations, --integrator
-/// and --duration. Throws ScenarioError, also for a bad front file.
-Scenario loadScenario(const ScenarioSource& source, const RunOptions& options, Settings& settings,
+/// Reads a scenario and resolves its settings once, into scenario.settings,
+/// which every mode then reads: the file's, then --tolerance's choice (what
+/// it chose and why, a line each, goes to `choiceLines` if given), then
+/// --timestep, --iterations, --integrator and --duration. Throws
+/// ScenarioError, also for a bad front file.
+Scenario loadScenario(const ScenarioSource& source, const RunOptions& options,
                       std::vector<std::string>* choiceLines = nullptr);
 
 /// Runs every scenario, then prints all outcomes to `out` (text, or JSON: an

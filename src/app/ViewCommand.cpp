@@ -35,8 +35,8 @@ int viewScenario(const ViewOptions& options, std::ostream& err) {
     return kExitFailure;
   }
   try {
-    Settings settings;
-    Scenario scenario = loadScenario(options.run.scenarios.front(), options.run, settings);
+    Scenario scenario = loadScenario(options.run.scenarios.front(), options.run);
+    const Settings settings = scenario.settings;
     ViewerSettings viewer;
     viewer.mode = options.run.mode;
     viewer.playScript = options.playScript;
