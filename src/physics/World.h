@@ -15,6 +15,7 @@
 #include "core/TableSpec.h"
 #include "physics/DynamicsWorld.h"
 #include "physics/Ground.h"
+#include "physics/Pipeline.h"
 #include "physics/Shape.h"
 #include "physics/Table.h"
 
@@ -124,11 +125,9 @@ class World : public Simulation {
   };
 
   Settings settings_;
-  std::unique_ptr<btDefaultCollisionConfiguration> configuration_;
-  std::unique_ptr<btCollisionDispatcher> dispatcher_;
-  std::unique_ptr<btBroadphaseInterface> broadphase_;
-  std::unique_ptr<btSequentialImpulseConstraintSolver> solver_;
-  std::unique_ptr<DynamicsWorld> world_;
+  Pipeline pipeline_;
+  btCollisionDispatcher* dispatcher_;  // pipeline_'s
+  DynamicsWorld* world_;               // pipeline_'s
   Table table_;
   Ground ground_;
   std::vector<std::unique_ptr<Shape>> entities_;
