@@ -96,6 +96,11 @@ class World : public Simulation {
  private:
   // A support index that names no body.
   static constexpr int kNoSupport = -100;
+  // An entity is at rest once slower than these for kRestWindow seconds
+  // (observe(); Bullet's sleeping thresholds too).
+  static constexpr double kRestSpeed = 5e-3;   // m/s
+  static constexpr double kRestSpin = 5e-2;    // rad/s
+  static constexpr double kRestWindow = 0.1;   // s
 
   // Per-entity bookkeeping that is not the report's.
   struct Tracker {

@@ -1,0 +1,176 @@
+// World's observer: after each step it reads the contact manifolds and
+// every entity's motion, and updates what the report and the events are
+// about: who touches whom, what holds each entity up, the drop test (report
+// 3.4), rest. Split from World.cpp, which builds and steps the scene.
+
+#include <algorithm>
+#include <set>
+
+#include "physics/World.h"
+
+namespace tabletop {
+namespace {
+
+// Two entities start touching when a contact point comes within
+// kTouchDistance, and part only once every point is beyond kApartDistance,
+// so two cubes sliding together do not flicker in and out of contact.
+constexpr double kTouchDistance = 1e-4;  // m
+constexpr double kApartDistance = 1e-3;  // m
+// A contact supports an entity when its normal points up within 60 degrees.
+constexpr double kSupportNormalY = 0.5;
+}  // namespace
+
+// Nothing is judged at rest before the first look at the scene (start()),
+// which sees the starting velocities and what holds each body up.
+bool World::allAtRest() const {
+  if (!started_) return false;
+  for (const Tracker& t : trackers_) {
+    if (!t.atRest) return false;
+  }
+  return true;
+}
+
+// Reads the contact manifolds and every entity's motion after a step, and
+// records what changed. With `emit` false (the initial state) it only sets
+// the state.
+void World::observe(bool emit) {
+  const std::size_t n = entities_.size();
+
+  // Contacts, one entry per (entity, other body) pair and side: how close
+  // they are, and how hard the other pushes the entity up. Entries are
+  // merged by sorting, in a buffer kept from step to step.
+  contacts_.clear();
+  for (int m = 0; m < dispatcher_->getNumManifolds(); ++m) {
+    const btPersistentManifold* manifold = dispatcher_->getManifoldByIndexInternal(m);
+    const int a = manifold->getBody0()->getUserIndex();
+    const int b = manifold->getBody1()->getUserIndex();
+    // A manifold left without points, its drifted ones dropped as two
+    // boxes part while sliding (DynamicsWorld), holds a pair Bullet still
+    // sees as near: it counts as at the parting distance, so a pair that
+    // was touching stays so and one that was not does not begin.
+    if (manifold->getNumContacts() == 0) {
+      if (a >= 0) contacts_.push_back({a, b, kApartDistance, -1.0});
+      if (b >= 0) contacts_.push_back({b, a, kApartDistance, -1.0});
+    }
+    for (int p = 0; p < manifold->getNumContacts(); ++p) {
+      const btManifoldPoint& point = manifold->getContactPoint(p);
+      const double distance = point.getDistance();
+      const bool touching = distance <= kTouchDistance;
+      // The normal on B points from B towards A.
+      const double up = point.m_normalWorldOnB.y();
+      const double impulse = point.getAppliedImpulse();
+      if (a >= 0) contacts_.push_back({a, b, distance, touching && up > kSupportNormalY ? impulse : -1.0});
+      if (b >= 0) contacts_.push_back({b, a, distance, touching && -up > kSupportNormalY ? impulse : -1.0});
+    }
+  }
+  std::sort(contacts_.begin(), contacts_.end(), [](const Contact& x, const Contact& y) {
+    return x.entity != y.entity ? x.entity < y.entity : x.other < y.other;
+  });
+  // Merge: the closest distance, and the summed upward impulse (or -1 when
+  // the other body does not hold the entity up).
+  std::size_t merged = 0;
+  for (std::size_t k = 0; k < contacts_.size(); ++k) {
+    Contact& c = contacts_[k];
+    if (merged > 0 && contacts_[merged - 1].entity == c.entity && contacts_[merged - 1].other == c.other) {
+      Contact& into = contacts_[merged - 1];
+      into.distance = std::min(into.distance, c.distance);
+      if (c.support >= 0) into.support = std::max(into.support, 0.0) + c.support;
+    } else {
+      contacts_[merged++] = c;
+    }
+  }
+  contacts_.resize(merged);
+
+  std::set<std::pair<int, int>> touching;
+  for (const Contact& c : contacts_) {
+    if (c.other < 0 || c.entity > c.other) continue;  // each entity pair once
+    const auto pair = std::make_pair(c.entity, c.other);
+    const bool was = touching_.count(pair) > 0;
+    if (c.distance <= kTouchDistance || (was && c.distance <= kApartDistance)) {
+      touching.insert(pair);
+      if (emit && !was) {
+        Event e;
+        e.t = time_;
+        e.type = EventType::ContactBegin;
+        e.entity = entities_[pair.first]->name();
+        e.other = entities_[pair.second]->name();
+        record(e);
+      }
+    }
+  }
+  touching_ = std::move(touching);
+
+  // Support: the body pushing each entity up hardest (ties: the lower
+  // index, the table and ground first).
+  std::vector<int> support(n, kNoSupport);
+  std::vector<double> strongest(n, -1.0);
+  for (const Contact& c : contacts_) {
+    if (c.support > strongest[c.entity]) {
+      strongest[c.entity] = c.support;
+      support[c.entity] = c.other;
+    }
+  }
+
+  for (std::size_t i = 0; i < n; ++i) {
+    Shape& shape = *entities_[i];
+    Tracker& tracker = trackers_[i];
+
+    // A new support that is not the last one means the entity landed.
+    if (support[i] != tracker.support) {
+      tracker.support = support[i];
+      shape.setSupport(support[i] == kNoSupport ? "none" : participantName(support[i]));
+      if (support[i] != kNoSupport) {
+        if (emit && support[i] != tracker.lastSupport) {
+          Event e;
+          e.t = time_;
+          e.type = EventType::Lands;
+          e.entity = shape.name();
+          e.on = shape.support();
+          record(e);
+        }
+        tracker.lastSupport = support[i];
+      }
+    }
+
+    // Report 3.4: the centre passing an edge starts the drop.
+    if (shape.checkBoundary(table_) && emit) {
+      Event e;
+      e.t = time_;
+      e.type = EventType::LeavesTable;
+      e.entity = shape.name();
+      e.edge = std::string(edgeName(shape.status()));
+      record(e);
+    }
+
+    // Rest: slow for a whole window; the event carries the window's start.
+    const btRigidBody* body = shape.body();
+    const bool slow = body->getLinearVelocity().length() < kRestSpeed &&
+                      body->getAngularVelocity().length() < kRestSpin;
+    if (!slow) {
+      tracker.quietSince = -1.0;
+      tracker.atRest = false;
+    } else if (!emit) {
+      // At the start, a slow body is at rest only where something holds it
+      // up: one placed in mid-air is about to fall.
+      tracker.atRest = support[i] != kNoSupport;
+    } else {
+      if (tracker.quietSince < 0.0) tracker.quietSince = time_;
+      if (!tracker.atRest && time_ - tracker.quietSince >= kRestWindow - 1e-12) {
+        tracker.atRest = true;
+        Event e;
+        e.t = tracker.quietSince;
+        e.type = EventType::AtRest;
+        e.entity = shape.name();
+        record(e);
+      }
+    }
+
+    // The drop ends once the entity is at rest below the table top.
+    if (isDropping(shape.status()) && tracker.atRest &&
+        shape.position().y() < table_.topHeight()) {
+      shape.finishDrop();
+    }
+  }
+}
+
+}  // namespace tabletop
