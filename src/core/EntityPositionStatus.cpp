@@ -22,14 +22,19 @@ std::optional<EntityPositionStatus> statusFromString(std::string_view name) { re
 
 bool isDropping(EntityPositionStatus s) { return !edgeName(s).empty(); }
 
-std::string_view edgeName(EntityPositionStatus s) {
+std::optional<DirectionDef> dropEdge(EntityPositionStatus s) {
   switch (s) {
-    case EntityPositionStatus::DropFromLeftEdge: return "Left";
-    case EntityPositionStatus::DropFromFrontEdge: return "Front";
-    case EntityPositionStatus::DropFromRightEdge: return "Right";
-    case EntityPositionStatus::DropFromBackEdge: return "Back";
-    default: return "";
+    case EntityPositionStatus::DropFromLeftEdge: return DirectionDef::Left;
+    case EntityPositionStatus::DropFromFrontEdge: return DirectionDef::Front;
+    case EntityPositionStatus::DropFromRightEdge: return DirectionDef::Right;
+    case EntityPositionStatus::DropFromBackEdge: return DirectionDef::Back;
+    default: return std::nullopt;
   }
+}
+
+std::string_view edgeName(EntityPositionStatus s) {
+  const auto edge = dropEdge(s);
+  return edge ? toString(*edge) : std::string_view();
 }
 
 }  // namespace tabletop

@@ -3,6 +3,8 @@
 #include <optional>
 #include <string_view>
 
+#include "core/DirectionDef.h"
+
 namespace tabletop {
 
 /// The report's EntityPositionStatus (report 2): on the table, dropping from
@@ -27,5 +29,9 @@ bool isDropping(EntityPositionStatus s);
 
 /// The edge's name in a DropFrom...Edge status ("Left", ...); empty otherwise.
 std::string_view edgeName(EntityPositionStatus s);
+
+/// The edge a DropFrom...Edge status names, as the side of the table it is
+/// on (the report names edges as it names faces); nothing otherwise.
+std::optional<DirectionDef> dropEdge(EntityPositionStatus s);
 
 }  // namespace tabletop

@@ -1,7 +1,10 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "core/DirectionDef.h"
 
 namespace tabletop {
 
@@ -24,9 +27,9 @@ struct Event {
   EventType type = EventType::Push;
   std::string entity;
   std::string other;      ///< ContactBegin: the second entity
-  std::string edge;       ///< LeavesTable: "Left", "Right", "Front", "Back"
-  std::string on;         ///< Lands: "table", "ground" or an entity name
-  std::string direction;  ///< Push: a DirectionDef name, or empty for an angle
+  std::optional<DirectionDef> edge;  ///< LeavesTable: the table edge passed
+  std::string on;                    ///< Lands: "table", "ground" or an entity name
+  std::optional<DirectionDef> face;  ///< Push: the face pushed, or nothing for an angle
   double angle = 0.0;     ///< Push: world angle (report 3.8); Rotate: degrees turned
   double impulse = 0.0;   ///< Push: N*s
   double step = 0.0;      ///< Push: metres, when the push was given as a step

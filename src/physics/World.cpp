@@ -275,7 +275,7 @@ void World::push(const Arrow& arrow, const PushMagnitude& magnitude) {
   e.t = time_;
   e.type = EventType::Push;
   e.entity = shape.name();
-  if (arrow.face) e.direction = std::string(toString(*arrow.face));
+  e.face = arrow.face;
   e.angle = angle;
   e.impulse = impulse;
   if (magnitude.kind == PushMagnitude::Kind::Step) e.step = magnitude.value;

@@ -18,6 +18,7 @@ constexpr double kTouchDistance = 1e-4;  // m
 constexpr double kApartDistance = 1e-3;  // m
 // A contact supports an entity when its normal points up within 60 degrees.
 constexpr double kSupportNormalY = 0.5;
+
 }  // namespace
 
 // Nothing is judged at rest before the first look at the scene (start()),
@@ -138,7 +139,7 @@ void World::observe(bool emit) {
       e.t = time_;
       e.type = EventType::LeavesTable;
       e.entity = shape.name();
-      e.edge = std::string(edgeName(shape.status()));
+      e.edge = dropEdge(shape.status());
       record(e);
     }
 

@@ -302,7 +302,7 @@ void RuleEngine::leaveTable(std::size_t i, EntityPositionStatus status) {
   for (std::size_t k : group) {
     bodies_[k].status = status;
     Event e = eventAt(now_, EventType::LeavesTable, bodies_[k].name);
-    e.edge = std::string(edgeName(status));
+    e.edge = dropEdge(status);
     record(e);
   }
   if (release_) {
@@ -420,7 +420,7 @@ void RuleEngine::push(const Arrow& arrow, const PushMagnitude& magnitude) {
   m.remaining = magnitude.value;
 
   Event e = eventAt(now_, EventType::Push, b.name);
-  if (arrow.face) e.direction = std::string(toString(*arrow.face));
+  e.face = arrow.face;
   e.angle = angle;
   e.step = magnitude.value;
   record(e);

@@ -36,7 +36,7 @@ double yawDifference(double a, double b) {
   return std::abs(d);
 }
 
-std::string firstEdge(const RunResult& run, const std::string& entity) {
+std::optional<DirectionDef> firstEdge(const RunResult& run, const std::string& entity) {
   for (const Event& e : run.events) {
     if (e.type == EventType::LeavesTable && e.entity == entity) return e.edge;
   }
@@ -167,7 +167,7 @@ nlohmann::json comparisonJson(const Comparison& c) {
                           {"status", toString(o.state.status)},
                           {"support", o.state.support},
                           {"verdict", o.verdict}};
-      if (!o.edge.empty()) mode["edge"] = o.edge;
+      if (o.edge) mode["edge"] = toString(*o.edge);
       if (m > 0) mode["distance_from_rules"] = o.fromRules;
       j[std::string(toString(kAllModes[m]))] = mode;
     }

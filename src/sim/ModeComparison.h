@@ -21,7 +21,7 @@ struct Trajectory {
 /// One entity in one mode against the rules.
 struct ModeOutcome {
   EntityState state;
-  std::string edge;         ///< the table edge it left by, or empty
+  std::optional<DirectionDef> edge;  ///< the table edge it left by, if it did
   double fromRules = 0.0;   ///< distance of the final centre from the rules', m
   std::string verdict;      ///< "reference", "agrees", or "diverges: <reason>"
   Trajectory trajectory;

@@ -24,13 +24,13 @@ nlohmann::json eventJson(const Event& e) {
   nlohmann::json j{{"t", e.t}, {"type", toString(e.type)}, {"entities", eventEntities(e)}};
   switch (e.type) {
     case EventType::Push:
-      if (!e.direction.empty()) j["direction"] = e.direction;
+      if (e.face) j["direction"] = toString(*e.face);
       j["angle"] = e.angle;
       if (e.impulse > 0) j["impulse"] = e.impulse;  // the rules push by steps, not impulses
       if (e.step > 0) j["step"] = e.step;
       break;
     case EventType::Rotate: j["angle"] = e.angle; break;
-    case EventType::LeavesTable: j["edge"] = e.edge; break;
+    case EventType::LeavesTable: j["edge"] = e.edge ? toString(*e.edge) : ""; break;
     case EventType::Lands: j["on"] = e.on; break;
     default: break;
   }
@@ -43,13 +43,14 @@ std::string describe(const Event& e) {
   switch (e.type) {
     case EventType::Push: {
       std::string s = "push " + e.entity + " " +
-                      (e.direction.empty() ? "at " + fixed(e.angle, 1) + " deg" : e.direction);
+                      (e.face ? std::string(toString(*e.face)) : "at " + fixed(e.angle, 1) + " deg");
       if (e.step > 0) s += ", step " + fixed(e.step, 3) + " m";
       return e.impulse > 0 ? s + " (impulse " + fixed(e.impulse, 4) + " N s)" : s;
     }
     case EventType::Rotate: return "rotate " + e.entity + " by " + fixed(e.angle, 1) + " deg";
     case EventType::ContactBegin: return "contact begins between " + e.entity + " and " + e.other;
-    case EventType::LeavesTable: return e.entity + " leaves the table (" + e.edge + " edge)";
+    case EventType::LeavesTable:
+      return e.entity + " leaves the table (" + std::string(e.edge ? toString(*e.edge) : "") + " edge)";
     case EventType::Lands: return e.entity + " lands on " + e.on;
     case EventType::AtRest: return e.entity + " comes to rest";
   }

@@ -87,7 +87,7 @@ TEST_F(PhysicsFixture, CubePushedOffTheEdgeDropsAndFinishes) {
                                                                 EventType::Lands, EventType::AtRest}));
   const auto leaves = std::find_if(w.events().begin(), w.events().end(),
                                    [](const Event& e) { return e.type == EventType::LeavesTable; });
-  EXPECT_EQ(leaves->edge, "Right");
+  EXPECT_EQ(leaves->edge, DirectionDef::Right);
 }
 
 // A cube on a cube is supported by it; the pair touches from the start, so

@@ -153,7 +153,7 @@ TEST(RuleEngine, ATargetPastTheEdgeDropsTheEntityThere) {
   runToRest(*e);
   const Event* leaves = first(*e, EventType::LeavesTable, "A");
   ASSERT_NE(leaves, nullptr);
-  EXPECT_EQ(leaves->edge, "Right");
+  EXPECT_EQ(leaves->edge, DirectionDef::Right);
   EXPECT_NEAR(leaves->t, (0.6 - 0.4) / RuleEngine::kDriveSpeed, kExact);
   const RuleBody& a = e->bodies()[0];
   EXPECT_EQ(a.status, EntityPositionStatus::FinishDropSimulation);
@@ -278,7 +278,7 @@ TEST(RuleEngine, ARiderSlidingOffItsBasePastTheTableEdgeDrops) {
   EXPECT_NEAR(s[1].position.y, 0.05, kExact);
   bool left = false;
   for (const Event& ev : e.events()) {
-    left = left || (ev.type == EventType::LeavesTable && ev.entity == "B" && ev.edge == "Right");
+    left = left || (ev.type == EventType::LeavesTable && ev.entity == "B" && ev.edge == DirectionDef::Right);
   }
   EXPECT_TRUE(left);
 }

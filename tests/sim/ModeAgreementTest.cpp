@@ -29,7 +29,7 @@ RunResult runIn(const Scenario& s, SimulationMode mode) {
 std::vector<std::string> dropOrder(const RunResult& r) {
   std::vector<std::string> order;
   for (const Event& e : r.events) {
-    if (e.type == EventType::LeavesTable) order.push_back(e.entity + "/" + e.edge);
+    if (e.type == EventType::LeavesTable) order.push_back(e.entity + "/" + std::string(e.edge ? toString(*e.edge) : ""));
   }
   return order;
 }

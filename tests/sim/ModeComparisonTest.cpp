@@ -12,7 +12,7 @@ namespace tabletop {
 namespace {
 
 ModeOutcome at(double x, double z, EntityPositionStatus status = EntityPositionStatus::OnTable,
-               const std::string& edge = "") {
+               std::optional<DirectionDef> edge = std::nullopt) {
   ModeOutcome o;
   o.state.position = {x, 0.8, z};
   o.state.status = status;
@@ -33,10 +33,10 @@ TEST(Verdict, NamesEachReason) {
   EXPECT_EQ(judge(rules, at(0.2, 0.0)), "diverges: stopped short");
   EXPECT_EQ(judge(rules, at(0.4, 0.0)), "diverges: went further");
   EXPECT_EQ(judge(rules, at(0.3, 0.2)), "diverges: went sideways");
-  EXPECT_EQ(judge(rules, at(0.9, 0.0, drop, "Right")), "diverges: slid off");
-  EXPECT_EQ(judge(at(0.9, 0.0, drop, "Right"), at(0.3, 0.0)), "diverges: stayed behind");
-  EXPECT_EQ(judge(at(0.9, 0.0, drop, "Right"), at(0.0, 0.6, drop, "Front")), "diverges: dropped from another edge");
-  EXPECT_EQ(judge(at(0.9, 0.0, drop, "Right"), at(1.2, 0.1, drop, "Right")), "agrees");
+  EXPECT_EQ(judge(rules, at(0.9, 0.0, drop, DirectionDef::Right)), "diverges: slid off");
+  EXPECT_EQ(judge(at(0.9, 0.0, drop, DirectionDef::Right), at(0.3, 0.0)), "diverges: stayed behind");
+  EXPECT_EQ(judge(at(0.9, 0.0, drop, DirectionDef::Right), at(0.0, 0.6, drop, DirectionDef::Front)), "diverges: dropped from another edge");
+  EXPECT_EQ(judge(at(0.9, 0.0, drop, DirectionDef::Right), at(1.2, 0.1, drop, DirectionDef::Right)), "agrees");
   ModeOutcome turned = at(0.3, 0.0);
   turned.state.yawDegrees = 15.0;
   EXPECT_EQ(judge(rules, turned), "diverges: rotated");

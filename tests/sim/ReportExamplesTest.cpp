@@ -55,7 +55,7 @@ TEST(ReportExamples, Example1SingleCubeDropsOffTheRightEdge) {
   EXPECT_NEAR(a.position.y, 0.05, 1e-3);  // a 0.1 m cube on the ground
   const long leaves = firstEvent(r, EventType::LeavesTable, "A");
   ASSERT_GE(leaves, 0);
-  EXPECT_EQ(r.events[leaves].edge, "Right");
+  EXPECT_EQ(r.events[leaves].edge, DirectionDef::Right);
   EXPECT_LT(leaves, firstEvent(r, EventType::Lands, "A"));
   // Pushed four times; the first three end on the table at rest.
   EXPECT_EQ(std::count_if(r.events.begin(), r.events.end(), [](const Event& e) { return e.type == EventType::Push; }), 4);
@@ -102,7 +102,7 @@ TEST(ReportExamples, Example2CubePushesTheOtherOffTheTable) {
   ASSERT_GE(contact, 0);
   ASSERT_GE(leaves, 0);
   EXPECT_LT(contact, leaves);
-  EXPECT_EQ(r.events[leaves].edge, "Right");
+  EXPECT_EQ(r.events[leaves].edge, DirectionDef::Right);
   EXPECT_LT(leaves, firstEvent(r, EventType::Lands, "B"));
   EXPECT_EQ(r.events[firstEvent(r, EventType::Lands, "B")].on, "ground");
   // Both moved along the arrow. B drifts 2.7 mm sideways over its 0.4 m
@@ -121,7 +121,7 @@ TEST(ReportExamples, Example3StackedCubesBothVariants) {
   const RunResult r = runExample("example3_stacked_cubes.json");
   for (const char* name : {"BigPushed", "SmallRider"}) {
     EXPECT_EQ(entity(r, name).status, EntityPositionStatus::FinishDropSimulation) << name;
-    EXPECT_EQ(r.events[firstEvent(r, EventType::LeavesTable, name)].edge, "Right") << name;
+    EXPECT_EQ(r.events[firstEvent(r, EventType::LeavesTable, name)].edge, DirectionDef::Right) << name;
     EXPECT_EQ(r.events[firstEvent(r, EventType::Lands, name)].on, "ground") << name;
   }
   // The rider stays on its base while that slides (it left with it, not
@@ -156,7 +156,7 @@ TEST(ReportExamples, Example4SpheresPartWaysAndTheBigOneDrops) {
   const long contact = firstEvent(r, EventType::ContactBegin, "Big");
   ASSERT_GE(contact, 0);
   EXPECT_EQ(big.status, EntityPositionStatus::FinishDropSimulation);
-  EXPECT_EQ(r.events[firstEvent(r, EventType::LeavesTable, "Big")].edge, "Right");
+  EXPECT_EQ(r.events[firstEvent(r, EventType::LeavesTable, "Big")].edge, DirectionDef::Right);
   EXPECT_EQ(small.status, EntityPositionStatus::OnTable);
 
   // Distances travelled after the contact, from where each started.
