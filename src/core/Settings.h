@@ -15,22 +15,11 @@ inline constexpr double kMinTimestep = 1e-5;
 inline constexpr double kMaxTimestep = 0.1;
 inline constexpr double kMaxSteps = 1e7;
 
-/// How a scene is stepped. Every mode reads the same settings; defaults are
-/// documented in scenarios/README.md.
-struct Settings {
-  double timestep = 1.0 / 240.0;  ///< fixed step, seconds
-  int iterations = 10;            ///< constraint solver iterations per step
-  /// How contact impulses are found: sequential impulses (`iterations`
-  /// sweeps) or each island solved exactly (README, "Hard cases").
-  ContactSolver solver = ContactSolver::SequentialImpulse;
-  /// Full physics cuts a step into up to this many equal parts while a
-  /// body moves fast for its size (README, "Hard cases"); 1 never does.
-  int maxSubsteps = 64;
-  double duration = 10.0;         ///< longest simulated time, seconds
-  double gravity = 9.81;          ///< m/s^2, acting along -Y
-  bool endAtRest = true;          ///< stop once the script is done and all is at rest
-  bool sleeping = false;          ///< let Bullet deactivate bodies at rest
-  Integrator integrator = Integrator::Trapezoid;  ///< how positions follow velocities
+/// The knobs of full physics alone (Bullet's solver and collision world);
+/// the rules ignore them. Read flat from a scenario's "settings" (their
+/// keys are listed in scenarios/README.md).
+struct BulletSettings {
+  bool sleeping = false;  ///< let Bullet deactivate bodies at rest
   /// The share of each contact's impulse from the step before that the
   /// solver starts from (Bullet's warm starting factor; its own default is
   /// 0.85). 1 carries a resting stack's load from step to step whole.
@@ -43,8 +32,8 @@ struct Settings {
   /// implicit step in body axes; README, "Hard cases", compares them).
   Gyroscopic gyroscopic = Gyroscopic::ImplicitBody;
 
-  // What the collision world models (full physics; README, "Modelling
-  // only what a scene needs", has what each saves and costs).
+  // What the collision world models (README, "Modelling only what a scene
+  // needs", has what each saves and costs).
   Broadphase broadphase = Broadphase::Dbvt;  ///< how overlapping pairs are found
   /// The table's legs join the collision world only once a body can reach
   /// them (its bounding box comes down to the underside of the top).
@@ -52,6 +41,25 @@ struct Settings {
   /// The floor pairs only with bodies whose bounding box comes down to it
   /// (a half-space's bound), not with every body (an infinite plane's).
   bool floorPairsNearFloor = true;
+};
+
+/// How a scene is stepped: one value, resolved once per run (scenario,
+/// then the command line), that every mode reads. Defaults are documented
+/// in scenarios/README.md.
+struct Settings {
+  double timestep = 1.0 / 240.0;  ///< fixed step, seconds
+  int iterations = 10;            ///< constraint solver iterations per step
+  /// How contact impulses are found: sequential impulses (`iterations`
+  /// sweeps) or each island solved exactly (README, "Hard cases").
+  ContactSolver solver = ContactSolver::SequentialImpulse;
+  /// Full physics cuts a step into up to this many equal parts while a
+  /// body moves fast for its size (README, "Hard cases"); 1 never does.
+  int maxSubsteps = 64;
+  double duration = 10.0;         ///< longest simulated time, seconds
+  double gravity = 9.81;          ///< m/s^2, acting along -Y
+  bool endAtRest = true;          ///< stop once the script is done and all is at rest
+  Integrator integrator = Integrator::Trapezoid;  ///< how positions follow velocities
+  BulletSettings bullet;          ///< full physics only
 };
 
 }  // namespace tabletop

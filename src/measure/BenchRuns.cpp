@@ -156,7 +156,7 @@ std::vector<ScalePoint> measureScale(const std::vector<int>& sizes, int repeats,
     for (const ModelSwitch& m : modelSwitches(field.scenario().settings)) {
       if (hooks.stop()) return points;
       hooks.advance(field.name() + " " + m.name);
-      if (m.settings.broadphase == Broadphase::Simple && n > kSimpleBroadphaseLimit) continue;
+      if (m.settings.bullet.broadphase == Broadphase::Simple && n > kSimpleBroadphaseLimit) continue;
       // Large fields run long enough that a warm-up adds nothing but time.
       const Timed t = timed(repeats, n < 1000, m.settings.timestep, [&] { return field.measure(m.settings); });
       if (m.name == "defaults") defaults = t.last;

@@ -31,7 +31,7 @@ std::unique_ptr<btBroadphaseInterface> makeBroadphase(Broadphase kind, const Tab
 Pipeline::Pipeline(const Settings& settings, const TableSpec& table)
     : configuration(std::make_unique<btDefaultCollisionConfiguration>()),
       dispatcher(std::make_unique<ContactDispatcher>(configuration.get())),
-      broadphase(makeBroadphase(settings.broadphase, table)),
+      broadphase(makeBroadphase(settings.bullet.broadphase, table)),
       solver(settings.solver == ContactSolver::Dantzig
                  ? std::make_unique<IslandSolver>(kDirectRowLimit)
                  : std::make_unique<btSequentialImpulseConstraintSolver>()),
@@ -79,9 +79,9 @@ Pipeline::Pipeline(const Settings& settings, const TableSpec& table)
   // 0.1 m cubes at 240 Hz and 10 iterations, Bullet's 0.85 let the stack
   // lose 15% of its support each step and fall after 1.6 s; with 1 it
   // stands (5.5 mm worst drift over 60 s, all of it in the first second).
-  info.m_warmstartingFactor = settings.warmStart;
+  info.m_warmstartingFactor = settings.bullet.warmStart;
   // Bullet sums the squared velocity change of every row over a sweep.
-  info.m_leastSquaresResidualThreshold = settings.solverTolerance * settings.solverTolerance;
+  info.m_leastSquaresResidualThreshold = settings.bullet.solverTolerance * settings.bullet.solverTolerance;
   // Sorted pairs make the solver's order independent of memory layout.
   world->getDispatchInfo().m_deterministicOverlappingPairs = true;
   // Separating axes by SAT, not GJK: for a cube centred over the table

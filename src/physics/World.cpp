@@ -47,8 +47,8 @@ World::World(const Settings& settings, const TableSpec& table, const Material& g
       pipeline_(settings, table),
       dispatcher_(pipeline_.dispatcher.get()),
       world_(pipeline_.world.get()),
-      table_(table, settings.legsWhenReachable),
-      ground_(ground, settings.floorPairsNearFloor) {
+      table_(table, settings.bullet.legsWhenReachable),
+      ground_(ground, settings.bullet.floorPairsNearFloor) {
   updateSmoothAcceleration();
   // The legs, when separate, are the table too: its material, its name.
   for (btRigidBody* part : {&table_.body(), table_.legsBody()}) {
@@ -116,8 +116,8 @@ Shape& World::addEntity(std::unique_ptr<Shape> shape, double mass, const Materia
   Tracker tracker;
   tracker.inner = inner;
   tracker.turningReach = shape->turningReach();
-  body->setFlags((body->getFlags() & ~kGyroscopicFlags) | gyroscopicFlag(settings_.gyroscopic));
-  if (!settings_.sleeping) body->setActivationState(DISABLE_DEACTIVATION);
+  body->setFlags((body->getFlags() & ~kGyroscopicFlags) | gyroscopicFlag(settings_.bullet.gyroscopic));
+  if (!settings_.bullet.sleeping) body->setActivationState(DISABLE_DEACTIVATION);
   world_->addRigidBody(body);
   indexOf_.emplace(shape->name(), entities_.size());
   entities_.push_back(std::move(shape));
@@ -156,7 +156,7 @@ void World::makeDynamic(std::size_t i, const btVector3& velocity) {
   body->updateInertiaTensor();
   body->setInterpolationWorldTransform(body->getWorldTransform());
   world_->addRigidBody(body);
-  if (!settings_.sleeping) body->setActivationState(DISABLE_DEACTIVATION);
+  if (!settings_.bullet.sleeping) body->setActivationState(DISABLE_DEACTIVATION);
   body->setLinearVelocity(velocity);
   body->setAngularVelocity(btVector3(0, 0, 0));
   body->activate(true);
@@ -320,7 +320,7 @@ void World::start() {
   // nothing until a push or a moving body touching it wakes it (Bullet
   // wakes an island with any active body in it). Bodies in the air stay
   // awake.
-  if (settings_.sleeping) {
+  if (settings_.bullet.sleeping) {
     for (std::size_t i = 0; i < entities_.size(); ++i) {
       if (trackers_[i].support != kNoSupport) entities_[i]->body()->setActivationState(ISLAND_SLEEPING);
     }

@@ -50,7 +50,7 @@ class World : public Simulation {
   const Table& table() const { return table_; }
   /// Whether the table's legs take part in collisions yet (always, unless
   /// Settings::legsWhenReachable keeps them out until a body can reach them).
-  bool legsInWorld() const { return legsIn_ || !settings_.legsWhenReachable; }
+  bool legsInWorld() const { return legsIn_ || !settings_.bullet.legsWhenReachable; }
   const std::vector<std::unique_ptr<Shape>>& entities() const { return entities_; }
   /// The entity called `name`, or null.
   Shape* find(std::string_view name);

@@ -122,14 +122,14 @@ Settings readSettings(const json& j, std::vector<Problem>& problems) {
   s.duration = f.number("duration", kSpan, s.duration);
   s.gravity = f.number("gravity", kGravity, s.gravity);
   s.endAtRest = f.boolean("end_at_rest", s.endAtRest);
-  s.sleeping = f.boolean("sleeping", s.sleeping);
+  s.bullet.sleeping = f.boolean("sleeping", s.bullet.sleeping);
   choice(f, "integrator", kAllIntegrators, s.integrator);
-  s.warmStart = f.number("warm_start", kUnitInterval, s.warmStart);
-  s.solverTolerance = f.number("solver_tolerance", kSpeedTolerance, s.solverTolerance);
-  choice(f, "gyroscopic", kAllGyroscopics, s.gyroscopic);
-  choice(f, "broadphase", kAllBroadphases, s.broadphase);
-  s.legsWhenReachable = f.boolean("legs_when_reachable", s.legsWhenReachable);
-  s.floorPairsNearFloor = f.boolean("floor_pairs_near_floor", s.floorPairsNearFloor);
+  s.bullet.warmStart = f.number("warm_start", kUnitInterval, s.bullet.warmStart);
+  s.bullet.solverTolerance = f.number("solver_tolerance", kSpeedTolerance, s.bullet.solverTolerance);
+  choice(f, "gyroscopic", kAllGyroscopics, s.bullet.gyroscopic);
+  choice(f, "broadphase", kAllBroadphases, s.bullet.broadphase);
+  s.bullet.legsWhenReachable = f.boolean("legs_when_reachable", s.bullet.legsWhenReachable);
+  s.bullet.floorPairsNearFloor = f.boolean("floor_pairs_near_floor", s.bullet.floorPairsNearFloor);
   f.finish();
   return s;
 }

@@ -28,8 +28,8 @@ std::vector<std::string> shippedScenarios() {
 }
 
 int differences(const Settings& a, const Settings& b) {
-  return (a.sleeping != b.sleeping) + (a.legsWhenReachable != b.legsWhenReachable) +
-         (a.floorPairsNearFloor != b.floorPairsNearFloor) + (a.broadphase != b.broadphase);
+  return (a.bullet.sleeping != b.bullet.sleeping) + (a.bullet.legsWhenReachable != b.bullet.legsWhenReachable) +
+         (a.bullet.floorPairsNearFloor != b.bullet.floorPairsNearFloor) + (a.bullet.broadphase != b.bullet.broadphase);
 }
 
 // The defaults first, then each switch flipped alone: one field differs.
@@ -53,7 +53,7 @@ TEST(ModelSwitch, PruningSwitchesLeaveEveryShippedOutcomeBitIdentical) {
     const Scenario s = ScenarioLoader::loadFile(file);
     std::uint64_t defaults = 0;
     for (const ModelSwitch& m : modelSwitches(s.settings)) {
-      if (m.settings.sleeping != s.settings.sleeping) continue;
+      if (m.settings.bullet.sleeping != s.settings.bullet.sleeping) continue;
       auto sim = buildSimulation(s, m.settings, SimulationMode::Bullet);
       const std::uint64_t hash = runScript(s, m.settings, *sim).stateHash;
       if (m.name == "defaults") defaults = hash;
@@ -68,7 +68,7 @@ TEST(ModelSwitch, PruningSwitchesLeaveEveryShippedOutcomeBitIdentical) {
 TEST(ModelSwitch, SleepingBodiesWakeWhenStruck) {
   const Scenario s = ScenarioLoader::loadFile(std::string(TABLETOP_SOURCE_DIR) + "/scenarios/example2_two_cubes.json");
   Settings sleeping = s.settings;
-  sleeping.sleeping = true;
+  sleeping.bullet.sleeping = true;
   auto sim = buildSimulation(s, sleeping, SimulationMode::Bullet);
   const RunResult r = runScript(s, sleeping, *sim);
   ASSERT_EQ(r.entities.size(), 2u);

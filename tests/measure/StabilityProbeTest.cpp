@@ -313,7 +313,7 @@ struct Tumble {
 
 Tumble tumble(const Scenario& scene, Gyroscopic gyroscopic) {
   Settings settings = scene.settings;
-  settings.gyroscopic = gyroscopic;
+  settings.bullet.gyroscopic = gyroscopic;
   Tumble t;
   btVector3 startMomentum(0, 0, 0), lastSpin(0, 0, 0);
   double startEnergy = -1.0;

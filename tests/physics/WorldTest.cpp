@@ -156,7 +156,7 @@ TEST(WorldDeterminism, SameSceneSameHash) {
 // (0.71 m), so it meets them if it falls onto them.
 TEST(WorldModel, LegsJoinOnlyOnceABodyCanReachThem) {
   Settings s;
-  s.legsWhenReachable = true;
+  s.bullet.legsWhenReachable = true;
   World slides(s, TableSpec{});
   slides.addEntity(std::make_unique<Cube>("A", 0.1), 0.5, Material{0.4, 0, 0, 0}, btVector3(-0.3, seated(0.8), 0), 0);
   slides.push(Arrow{"A", DirectionDef::Left, 0}, {PushMagnitude::Kind::Step, 0.3});
@@ -185,7 +185,7 @@ TEST(WorldModel, LegsJoinOnlyOnceABodyCanReachThem) {
 TEST(WorldModel, ABallOnTheFloorMeetsALegEitherWay) {
   auto run = [](bool whenReachable) {
     Settings s;
-    s.legsWhenReachable = whenReachable;
+    s.bullet.legsWhenReachable = whenReachable;
     World w(s, TableSpec{});
     const btVector3 leg = w.table().legCentre(3);
     w.addEntity(std::make_unique<Sphere>("S", 0.05), 0.2, Material{0.5, 0, 0, 0.8},
