@@ -13,6 +13,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "app/DataPaths.h"
 #include "app/GnuplotFile.h"
 #include "app/NumberOption.h"
 #include "app/InterruptGuard.h"
@@ -159,7 +160,7 @@ std::string plotScript(const std::vector<BenchPoint>& points, const std::string&
 void addBenchOptions(CLI::App& command, BenchOptions& options) {
   command.add_option("SCENARIO", options.scenarios,
                      "Scenes to measure (default: scenarios/analytic/*.json and the report's examples)");
-  command.add_option("--scenarios", options.scenarioDir, "Where the default scenes are (default: scenarios)");
+  command.add_option("--scenarios", options.scenarioDir, "Where the default scenes are (default: the shipped ones)");
   command.add_option("--cases", options.cases, "Only scenes whose name contains PATTERN");
   command.add_option("--out", options.outDir, "Write DIR/bench.csv and DIR/bench_SCENE.png (log-log plots)");
   command.add_option("--front", options.frontFile,
@@ -313,7 +314,9 @@ std::string scaleTable(const std::vector<ScalePoint>& points) {
 
 }  // namespace
 
-int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err) {
+int runBench(const BenchOptions& asked, std::ostream& out, std::ostream& err) {
+  BenchOptions options = asked;
+  if (options.scenarioDir.empty()) options.scenarioDir = shippedScenarios();
   std::vector<BenchScene> scenes;
   const std::vector<std::string> files = options.scenarios.empty() ? defaultScenes(options.scenarioDir)
                                                                    : options.scenarios;

@@ -17,7 +17,7 @@ namespace tabletop {
 /// What `tabletop bench` was asked to do.
 struct BenchOptions {
   std::vector<std::string> scenarios;  ///< scene files; default: the analytic cases and the report's examples
-  std::string scenarioDir = "scenarios";  ///< --scenarios: where the default scenes are
+  std::string scenarioDir;  ///< --scenarios: where the default scenes are; empty: the shipped ones
   std::optional<std::string> cases;    ///< --cases: only scenes whose name contains this
   std::optional<std::string> outDir;   ///< --out: CSV and plots
   std::optional<std::string> frontFile;  ///< --front: the analytic cases' fronts, for run --tolerance

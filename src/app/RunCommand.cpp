@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/DataPaths.h"
 #include "app/InterruptGuard.h"
 #include "app/NumberOption.h"
 #include "io/AtomicFile.h"
@@ -66,7 +67,7 @@ void addRunOptions(CLI::App& command, RunOptions& options, bool withMode) {
                      "--timestep, --iterations and --integrator override it)")
       ->check(finiteRange(1e-9, 1.0));
   command.add_option("--front", options.frontFile,
-                     "The front --tolerance reads (default data/tolerance_front.json; made by tabletop bench --front)");
+                     "The front --tolerance reads (default: the shipped data/tolerance_front.json; made by tabletop bench --front)");
   command.add_option("--duration", options.duration, "Longest simulated time in seconds (overrides the scenario)")
       ->check(finiteRange(1e-9, 3600.0));
 }
@@ -77,7 +78,8 @@ Scenario loadScenario(const ScenarioSource& source, const RunOptions& options,
                                   : ScenarioLoader::loadFile(source.name);
   Settings& settings = scenario.settings;
   if (options.tolerance) {
-    const ToleranceChoice choice = ToleranceFront::load(options.frontFile).choose(scenario, *options.tolerance);
+    const std::string front = options.frontFile.empty() ? shippedFront() : options.frontFile;
+    const ToleranceChoice choice = ToleranceFront::load(front).choose(scenario, *options.tolerance);
     settings = choice.settings;
     if (choiceLines) {
       std::ostringstream head;

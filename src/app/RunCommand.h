@@ -43,7 +43,7 @@ struct RunOptions {
   std::optional<std::string> traceFile;  ///< write every step's motions here (CSV), for one scenario
   double traceMaxMegabytes = 1024.0;     ///< the largest trace written, MB
   std::optional<double> tolerance;       ///< m: pick the cheapest settings the front says meet it
-  std::string frontFile = "data/tolerance_front.json";  ///< where --tolerance reads the front
+  std::string frontFile;  ///< where --tolerance reads the front; empty: the shipped one (DataPaths.h)
 };
 
 /// Declares run's options (all but the scenario list) on `command`; with

@@ -565,3 +565,25 @@ TEST(CommandLine, ViewWithoutADisplaySaysSoInOneLine) {
 }
 
 }  // namespace
+
+namespace {
+
+using namespace tabletop::testing;
+
+// The program finds its own files from where it is, not from the current
+// folder: --tolerance's front and bench's scenes, run from the root folder;
+// --version names the build.
+TEST(CommandLine, RunsFromAnyFolderAndSaysItsVersion) {
+  Outcome o = run("cd / && " + kBin + "tabletop run " + kScenarios + "example3_stacked_cubes.json --tolerance 1e-3");
+  EXPECT_EQ(o.status, 0) << o.err;
+  EXPECT_NE(o.out.find("for an error of at most 0.001 m, chose"), std::string::npos) << o.out;
+  o = run("cd / && " + kBin + "tabletop bench --cases free_flight --rates 60 --iterations 10 --repeats 1 --modes bullet");
+  EXPECT_EQ(o.status, 0) << o.err;
+  EXPECT_NE(o.out.find("free_flight"), std::string::npos) << o.out;
+  o = run(kBin + "tabletop --version");
+  EXPECT_EQ(o.status, 0) << o.err;
+  EXPECT_EQ(o.out.rfind("tabletop 0.1.0 (Bullet ", 0), 0u) << o.out;
+  EXPECT_NE(o.out.find(" precision)"), std::string::npos) << o.out;
+}
+
+}  // namespace

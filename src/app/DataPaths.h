@@ -1,0 +1,23 @@
+#pragma once
+
+#include <string>
+
+namespace tabletop {
+
+/// Where tabletop's own files are (the shipped scenarios and the tolerance
+/// front), found from the program, never from the current folder: the
+/// folder TABLETOP_DATA_DIR names if set; else, for an installed program,
+/// PREFIX/share/tabletop beside its bin/; else the source tree it was built
+/// from. Each holds scenarios/ and data/.
+std::string dataRoot();
+
+/// dataRoot()/scenarios
+std::string shippedScenarios();
+
+/// dataRoot()/data/tolerance_front.json, which run --tolerance reads.
+std::string shippedFront();
+
+/// "tabletop 0.1.0 (Bullet 3.24, double precision)".
+std::string versionLine();
+
+}  // namespace tabletop
