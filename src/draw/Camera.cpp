@@ -3,17 +3,17 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/Angle.h"
+
 namespace tabletop {
 namespace {
-
-constexpr double kDegree = 3.14159265358979323846 / 180.0;
 
 Vec3 unit(const Vec3& v) { return v * (1.0 / v.length()); }
 
 }  // namespace
 
 Vec3 Camera::eye() const {
-  const double yaw = yawDegrees * kDegree, pitch = pitchDegrees * kDegree;
+  const double yaw = convertAngle(yawDegrees), pitch = convertAngle(pitchDegrees);
   return target + Vec3{std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw)} * distance;
 }
 
@@ -33,7 +33,7 @@ Mat4 Camera::view() const {
 }
 
 Mat4 Camera::projection(double aspect) const {
-  const double f = 1.0 / std::tan(0.5 * fovyDegrees * kDegree);
+  const double f = 1.0 / std::tan(convertAngle(0.5 * fovyDegrees));
   Mat4 r;
   r.at(0, 0) = f / aspect;
   r.at(1, 1) = f;
@@ -61,7 +61,7 @@ void Camera::orbit(double yaw, double pitch) {
 
 void Camera::pan(double right, double up) {
   const Mat4 v = view();
-  const double scale = 2.0 * distance * std::tan(0.5 * fovyDegrees * kDegree);
+  const double scale = 2.0 * distance * std::tan(convertAngle(0.5 * fovyDegrees));
   const Vec3 r{v.at(0, 0), v.at(0, 1), v.at(0, 2)}, u{v.at(1, 0), v.at(1, 1), v.at(1, 2)};
   target = target + r * (right * scale) + u * (up * scale);
 }

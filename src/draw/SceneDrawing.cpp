@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/Angle.h"
+
 namespace tabletop {
 namespace {
-
-constexpr double kDegree = 3.14159265358979323846 / 180.0;
 
 // How far the floor reaches around the table, in table sizes.
 constexpr double kFloorReach = 3.0;
@@ -20,25 +20,15 @@ DrawShape shapeOf(const EntitySpec& spec, const EntityState& state) {
   d.position = state.position;
   d.orientation = state.orientation;
   d.colour = spec.colour;
-  switch (spec.shape) {
-    case ShapeKind::Cube: {
-      const double h = 0.5 * spec.size.at(0);
-      d.primitive = Primitive::Box, d.size = {h, h, h};
+  const ShapeGeometry g = geometryOf(spec);
+  switch (g.kind()) {
+    case ShapeKind::Cube:
+    case ShapeKind::SolidBox: d.primitive = Primitive::Box, d.size = g.halfExtents(); break;
+    case ShapeKind::Sphere: d.primitive = Primitive::Sphere, d.size = {g.radius(), 0, 0}; break;
+    case ShapeKind::Cylinder:
+      d.primitive = Primitive::Cylinder, d.size = {g.radius(), g.topRadius(), g.height()};
+      d.baseOffset = g.centroidHeight();
       break;
-    }
-    case ShapeKind::SolidBox:
-      d.primitive = Primitive::Box;
-      d.size = {0.5 * spec.size.at(0), 0.5 * spec.size.at(1), 0.5 * spec.size.at(2)};
-      break;
-    case ShapeKind::Sphere: d.primitive = Primitive::Sphere, d.size = {spec.size.at(0), 0, 0}; break;
-    case ShapeKind::Cylinder: {
-      const double r0 = spec.size.at(0), r1 = spec.size.at(1), h = spec.size.at(2);
-      d.primitive = Primitive::Cylinder, d.size = {r0, r1, h};
-      // The centroid of a frustum lies h (r0^2 + 2 r0 r1 + 3 r1^2) /
-      // (4 (r0^2 + r0 r1 + r1^2)) above its base.
-      d.baseOffset = h * (r0 * r0 + 2 * r0 * r1 + 3 * r1 * r1) / (4 * (r0 * r0 + r0 * r1 + r1 * r1));
-      break;
-    }
   }
   return d;
 }
@@ -50,7 +40,7 @@ double reach(const DrawShape& d, const EntityState& state, const Vec3& dir) {
     case Primitive::Cylinder: return std::max(d.size.x, d.size.y);
     case Primitive::Box: {
       // The support distance of a box turned by its yaw.
-      const double yaw = state.yawDegrees * kDegree;
+      const double yaw = convertAngle(state.yawDegrees);
       const double along = dir.x * std::cos(yaw) - dir.z * std::sin(yaw);
       const double across = dir.x * std::sin(yaw) + dir.z * std::cos(yaw);
       return std::abs(along) * d.size.x + std::abs(across) * d.size.z;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "core/ShapeGeometry.h"
 #include "physics/Shape.h"
 
 namespace tabletop {
@@ -17,6 +18,8 @@ class Cylinder : public Shape {
   double height() const { return height_; }
   /// Height of the centre of mass above the base, metres.
   double centroidHeight() const;
+  /// Its size and mass properties, Bullet-free.
+  ShapeGeometry geometry() const;
 
   ShapeKind kind() const override { return ShapeKind::Cylinder; }
   double volume() const override;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/ShapeGeometry.h"
 #include "physics/CollisionMargin.h"
 
 namespace tabletop {
@@ -27,13 +28,16 @@ SolidBox::SolidBox(std::string name, double width, double height, double depth)
                     collisionMargin(0.5 * std::min({width, height, depth})))),
       half_(btVector3(width, height, depth) * 0.5) {}
 
-double SolidBox::volume() const { return 8.0 * half_.x() * half_.y() * half_.z(); }
+// The box's geometry, from the sides its half extents were made from.
+static ShapeGeometry boxGeometry(const btVector3& half) {
+  return ShapeGeometry::box(2.0 * half.x(), 2.0 * half.y(), 2.0 * half.z());
+}
+
+double SolidBox::volume() const { return boxGeometry(half_).volume(); }
 
 btVector3 SolidBox::localInertia(double mass) const {
-  const double a2 = 4.0 * half_.x() * half_.x();
-  const double b2 = 4.0 * half_.y() * half_.y();
-  const double c2 = 4.0 * half_.z() * half_.z();
-  return btVector3(mass * (b2 + c2) / 12.0, mass * (a2 + c2) / 12.0, mass * (a2 + b2) / 12.0);
+  const Vec3 i = boxGeometry(half_).inertia(mass);
+  return btVector3(i.x, i.y, i.z);
 }
 
 // A ray from the centre along a horizontal direction leaves the box through

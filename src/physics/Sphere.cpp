@@ -1,6 +1,6 @@
 #include "physics/Sphere.h"
 
-#include "core/Angle.h"
+#include "core/ShapeGeometry.h"
 
 namespace tabletop {
 
@@ -9,11 +9,11 @@ namespace tabletop {
 Sphere::Sphere(std::string name, double radius)
     : Shape(std::move(name), std::make_unique<btSphereShape>(radius)), radius_(radius) {}
 
-double Sphere::volume() const { return 4.0 / 3.0 * kPi * radius_ * radius_ * radius_; }
+double Sphere::volume() const { return ShapeGeometry::sphere(radius_).volume(); }
 
 btVector3 Sphere::localInertia(double mass) const {
-  const double i = 0.4 * mass * radius_ * radius_;
-  return btVector3(i, i, i);
+  const Vec3 i = ShapeGeometry::sphere(radius_).inertia(mass);
+  return btVector3(i.x, i.y, i.z);
 }
 
 }  // namespace tabletop

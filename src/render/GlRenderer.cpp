@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/Angle.h"
+
 namespace tabletop {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Tessellation: fine enough that silhouettes look round at 1080p.
 constexpr int kSlices = 32;

@@ -9,6 +9,7 @@
 #include "core/Colour.h"
 #include "core/Material.h"
 #include "core/Settings.h"
+#include "core/ShapeGeometry.h"
 #include "core/ShapeKind.h"
 #include "core/TableSpec.h"
 #include "core/Vec3.h"
@@ -34,6 +35,9 @@ struct EntitySpec {
   Vec3 spin;               ///< angular velocity at the start, rad/s, world frame (full physics only)
   std::string path;        ///< JSON pointer of this entity in its file
 };
+
+/// An entity's geometry from its kind and sizes (valid once loaded).
+inline ShapeGeometry geometryOf(const EntitySpec& e) { return ShapeGeometry::fromSizes(e.shape, e.size).value(); }
 
 /// One step of a scenario's script.
 struct Action {

@@ -287,30 +287,15 @@ void checkOverTable(const EntitySpec& e, const TableSpec& t, std::vector<Problem
                                                 ", " + number(e.position.z) + "]"});
 }
 
-// Half the footprint of an entity's top along world X and Z: the square
-// that bounds a turned box (as the rules' footprint), a round top's radius.
-std::pair<double, double> topFootprint(const EntitySpec& e) {
-  if (e.size.empty()) return {0.0, 0.0};
-  switch (e.shape) {
-    case ShapeKind::Sphere: return {e.size[0], e.size[0]};
-    case ShapeKind::Cylinder: return {e.size.size() > 1 ? e.size[1] : 0.0, e.size.size() > 1 ? e.size[1] : 0.0};
-    case ShapeKind::Cube:
-    case ShapeKind::SolidBox: break;
-  }
-  const double hx = 0.5 * e.size[0], hz = 0.5 * (e.size.size() > 2 ? e.size[2] : e.size[0]);
-  const double a = e.yawDegrees * M_PI / 180.0;
-  const double c = std::abs(std::cos(a)), s = std::abs(std::sin(a));
-  return {c * hx + s * hz, s * hx + c * hz};
-}
-
 // An entity set on another stands over it: its centre within the other's
 // top. One placed beside its base would be seated at the base's height and
 // float there.
 void checkOverBase(const EntitySpec& e, const EntitySpec& base, std::vector<Problem>& problems) {
-  const auto [hx, hz] = topFootprint(base);
+  const auto geometry = ShapeGeometry::fromSizes(base.shape, base.size);
+  if (!geometry) return;  // its size was refused already
+  const auto [hx, hz] = geometry->topFootprint(base.yawDegrees);
   const double dx = e.position.x - base.position.x, dz = e.position.z - base.position.z;
-  const bool round = base.shape == ShapeKind::Sphere || base.shape == ShapeKind::Cylinder;
-  const bool over = round ? std::hypot(dx, dz) <= hx : std::abs(dx) <= hx && std::abs(dz) <= hz;
+  const bool over = geometry->round() ? std::hypot(dx, dz) <= hx : std::abs(dx) <= hx && std::abs(dz) <= hz;
   if (over) return;
   problems.push_back({e.path + "/position", "expected a centre over the top of " + quotedName(base.name) +
                                                 " (within " + number(hx) + " m of [" + number(base.position.x) +

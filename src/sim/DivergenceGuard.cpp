@@ -13,28 +13,6 @@ std::string message(const std::string& entity, double time, const std::string& d
   return o.str();
 }
 
-// Half the smallest dimension of an entity, metres.
-double smallestHalfDimension(const EntitySpec& e) {
-  switch (e.shape) {
-    case ShapeKind::Cube: return 0.5 * e.size.at(0);
-    case ShapeKind::Sphere: return e.size.at(0);
-    case ShapeKind::SolidBox: return 0.5 * *std::min_element(e.size.begin(), e.size.end());
-    case ShapeKind::Cylinder: return std::min({e.size.at(0), e.size.at(1), 0.5 * e.size.at(2)});
-  }
-  return 0.0;
-}
-
-// The radius of the sphere about the centre that holds the whole entity, m.
-double boundingRadius(const EntitySpec& e) {
-  switch (e.shape) {
-    case ShapeKind::Cube: return 0.5 * std::sqrt(3.0) * e.size.at(0);
-    case ShapeKind::Sphere: return e.size.at(0);
-    case ShapeKind::SolidBox: return 0.5 * std::hypot(e.size.at(0), e.size.at(1), e.size.at(2));
-    case ShapeKind::Cylinder: return std::hypot(std::max(e.size.at(0), e.size.at(1)), e.size.at(2));
-  }
-  return 0.0;
-}
-
 bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
 std::string shown(const Vec3& v) {
@@ -57,12 +35,12 @@ DivergenceGuard::DivergenceGuard(const Scenario& scenario, const Settings& setti
   for (const EntitySpec& e : scenario.entities) {
     names_.push_back(e.name);
     masses_.push_back(e.mass);
-    radii_.push_back(boundingRadius(e));
+    radii_.push_back(geometryOf(e).boundingRadius());
   }
   if (!masses_.empty()) lightest_ = *std::min_element(masses_.begin(), masses_.end());
   smallest_ = 0.0;
   for (const EntitySpec& e : scenario.entities) {
-    const double r = smallestHalfDimension(e);
+    const double r = geometryOf(e).smallestHalfDimension();
     smallest_ = smallest_ == 0.0 ? r : std::min(smallest_, r);
   }
   // Potential energy above the floor (y = 0), the lowest any centre can go.

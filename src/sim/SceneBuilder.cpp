@@ -22,15 +22,12 @@ constexpr double kOverlapTolerance = 1e-5;  // m
 
 std::unique_ptr<Shape> makeShape(const EntitySpec& e) {
   std::unique_ptr<Shape> shape;
-  switch (e.shape) {
-    case ShapeKind::Cube: shape = std::make_unique<Cube>(e.name, e.size.at(0)); break;
-    case ShapeKind::Sphere: shape = std::make_unique<Sphere>(e.name, e.size.at(0)); break;
-    case ShapeKind::SolidBox:
-      shape = std::make_unique<SolidBox>(e.name, e.size.at(0), e.size.at(1), e.size.at(2));
-      break;
-    case ShapeKind::Cylinder:
-      shape = std::make_unique<Cylinder>(e.name, e.size.at(0), e.size.at(1), e.size.at(2));
-      break;
+  const ShapeGeometry g = geometryOf(e);
+  switch (g.kind()) {
+    case ShapeKind::Cube: shape = std::make_unique<Cube>(e.name, g.side()); break;
+    case ShapeKind::Sphere: shape = std::make_unique<Sphere>(e.name, g.radius()); break;
+    case ShapeKind::SolidBox: shape = std::make_unique<SolidBox>(e.name, g.width(), g.boxHeight(), g.depth()); break;
+    case ShapeKind::Cylinder: shape = std::make_unique<Cylinder>(e.name, g.radius(), g.topRadius(), g.height()); break;
   }
   shape->setColour(e.colour);
   return shape;
@@ -80,14 +77,14 @@ std::vector<rules::RuleBody> buildRuleBodies(const Scenario& scenario) {
   std::vector<rules::RuleBody> bodies;
   std::map<std::string, int> indexOf;
   for (const EntitySpec& e : scenario.entities) {
-    const std::unique_ptr<Shape> shape = makeShape(e);
+    // The rules need only the geometry: no Bullet shape is made.
+    const ShapeGeometry g = geometryOf(e);
     rules::RuleBody b;
     b.name = e.name;
     b.shape = e.shape;
-    const btVector3 half = shape->halfExtents();
-    b.halfExtents = {half.x(), half.y(), half.z()};
-    b.below = shape->below();
-    b.above = shape->above();
+    b.halfExtents = g.halfExtents();
+    b.below = g.below();
+    b.above = g.above();
     b.position = e.position;
     b.yawDegrees = e.yawDegrees;
     b.support = rules::kOnNothing;
