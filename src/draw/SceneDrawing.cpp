@@ -20,7 +20,7 @@ DrawShape shapeOf(const EntitySpec& spec, const EntityState& state) {
   d.position = state.position;
   d.orientation = state.orientation;
   d.colour = spec.colour;
-  const ShapeGeometry g = geometryOf(spec);
+  const ShapeGeometry g = spec.geometry;
   switch (g.kind()) {
     case ShapeKind::Cube:
     case ShapeKind::SolidBox: d.primitive = Primitive::Box, d.size = g.halfExtents(); break;
@@ -62,7 +62,7 @@ double sizeOf(const DrawShape& d) {
 
 DrawArrow arrowFor(const Arrow& arrow, const EntitySpec& spec, const EntityState& state) {
   const DrawShape d = shapeOf(spec, state);
-  const Vec3 dir = pushDirection(arrow.worldAngleDegrees(spec.shape == ShapeKind::Sphere ? 0.0 : state.yawDegrees));
+  const Vec3 dir = pushDirection(arrow.worldAngleDegrees(spec.geometry.kind() == ShapeKind::Sphere ? 0.0 : state.yawDegrees));
   DrawArrow a;
   a.head = state.position - dir * (reach(d, state, dir) + kArrowGap);
   a.tail = a.head - dir * (1.2 * sizeOf(d));

@@ -135,7 +135,7 @@ AnalyticResult AnalyticCase::run(const Scenario& s, const Settings& settings, Si
   // from is the simulator's, so any error of the flight or of leaving the
   // edge stays in the measure.
   std::optional<double> landingX;
-  const double level = a.shape == ShapeKind::Sphere ? a.size.at(0) : 0.5 * a.size.at(0);
+  const double level = a.geometry.kind() == ShapeKind::Sphere ? a.geometry.sizes()[0] : 0.5 * a.geometry.sizes()[0];
   std::optional<BodyMotion> previous;
   const auto watch = [&](const Simulation& sim) {
     const BodyMotion now = sim.motions().front();
@@ -159,7 +159,7 @@ AnalyticResult AnalyticCase::run(const Scenario& s, const Settings& settings, Si
     const BodyMotion now = sim.motions().front();
     const double w = now.angularVelocity.length(), v = now.linearVelocity.x;
     if (tippingX || w < kTippingRate || v <= 0) return;
-    tippingX = now.position.x - v * a.size.at(0) * std::sqrt(w / (3.0 * g * v));
+    tippingX = now.position.x - v * a.geometry.sizes()[0] * std::sqrt(w / (3.0 * g * v));
   };
 
   AnalyticResult result;
@@ -196,7 +196,7 @@ AnalyticResult AnalyticCase::run(const Scenario& s, const Settings& settings, Si
     const double e = combine(a.material, b.material).restitution;
     const double vA = (a.mass - e * b.mass) * v0 / (a.mass + b.mass);
     const double vB = (1.0 + e) * a.mass * v0 / (a.mass + b.mass);
-    const double meet = (b.position.x - a.position.x - a.size.at(0) - b.size.at(0)) / v0;
+    const double meet = (b.position.x - a.position.x - a.geometry.sizes()[0] - b.geometry.sizes()[0]) / v0;
     if (T < meet) unfit(s, "expected a duration past the impact");
     const EntityState& endB = r.entities.at(indexOf(r, b.name));
     m.push_back({a.name + " speed after impact", "m/s", vA, endA.linearVelocity.x});
@@ -207,7 +207,7 @@ AnalyticResult AnalyticCase::run(const Scenario& s, const Settings& settings, Si
     if (combine(a.material, s.table.material).friction != 0.0) unfit(s, "expected a frictionless table");
     m.push_back({a.name + " centre x when it starts to tip", "m", s.table.centreX + 0.5 * s.table.width,
                  tippingX.value_or(std::nan(""))});
-    m.push_back({a.name + " height at rest on the floor", "m", 0.5 * a.size.at(0), endA.position.y});
+    m.push_back({a.name + " height at rest on the floor", "m", 0.5 * a.geometry.sizes()[0], endA.position.y});
   } else if (name_ == "stack_rides_along" || name_ == "stack_rider_slips") {
     const EntitySpec& b = entity(s, 1);
     const StackTravel d = stackTravel(v0, a.mass, b.mass, tableFriction(s, a),
@@ -220,7 +220,7 @@ AnalyticResult AnalyticCase::run(const Scenario& s, const Settings& settings, Si
     // step by the rule, and in full physics stops where it met B.
     const EntitySpec& b = entity(s, 1);
     const double step = pushStep(s);
-    const double gap = b.position.x - a.position.x - 0.5 * (a.size.at(0) + b.size.at(0));
+    const double gap = b.position.x - a.position.x - 0.5 * (a.geometry.sizes()[0] + b.geometry.sizes()[0]);
     if (gap < 0 || gap > step) unfit(s, "expected B ahead of A within the step");
     const EntityState& endB = r.entities.at(indexOf(r, b.name));
     m.push_back({a.name + " distance", "m", mode == SimulationMode::Bullet ? gap : step, endA.position.x - a.position.x});

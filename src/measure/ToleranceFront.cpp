@@ -27,7 +27,7 @@ std::string describe(const ToleranceFront::Point& p) {
 std::vector<std::string> motionsOf(const Scenario& scene) {
   bool sliding = false, rolling = false, stacked = false;
   for (const EntitySpec& e : scene.entities) {
-    (e.shape == ShapeKind::Sphere ? rolling : sliding) = true;
+    (e.geometry.kind() == ShapeKind::Sphere ? rolling : sliding) = true;
     if (!e.on.empty() && e.on != "table" && e.on != "ground") stacked = true;
   }
   // Anything pushed far enough leaves the table and flies to the floor.

@@ -18,13 +18,11 @@ namespace tabletop {
 
 class JsonLocator;
 
-/// One entity as a scenario file describes it. Sizes in metres: a cube's
-/// side, a sphere's radius, a box's width, height and depth, a cylinder's
-/// base radius, top radius and height.
+/// One entity as a scenario file describes it (sizes in metres, see
+/// ShapeGeometry).
 struct EntitySpec {
   std::string name;
-  ShapeKind shape = ShapeKind::Cube;
-  std::vector<double> size;
+  ShapeGeometry geometry = ShapeGeometry::cube(0.1);  ///< its kind and size
   Vec3 position;           ///< centre; y is filled in when `on` is set
   std::string on;          ///< "table", "ground", an earlier entity, or empty
   double yawDegrees = 0.0;
@@ -35,9 +33,6 @@ struct EntitySpec {
   Vec3 spin;               ///< angular velocity at the start, rad/s, world frame (full physics only)
   std::string path;        ///< JSON pointer of this entity in its file
 };
-
-/// An entity's geometry from its kind and sizes (valid once loaded).
-inline ShapeGeometry geometryOf(const EntitySpec& e) { return ShapeGeometry::fromSizes(e.shape, e.size).value(); }
 
 /// One step of a scenario's script.
 struct Action {

@@ -143,8 +143,10 @@ std::size_t sizeCount(ShapeKind k) {
 // file of n entities loads in O(n).
 using NameIndex = std::unordered_map<std::string, std::size_t>;
 
+// `sized`: whether its shape and size were read (else its geometry is the
+// default, and nothing is checked against it).
 EntitySpec readEntity(const json& j, const std::string& path, const NameIndex& earlier,
-                      std::vector<Problem>& problems) {
+                      std::vector<Problem>& problems, bool& sized) {
   EntitySpec e;
   e.path = path;
   Fields f(j, path, problems);
@@ -156,24 +158,25 @@ EntitySpec readEntity(const json& j, const std::string& path, const NameIndex& e
     f.fail(f.at("name"), quotedName(e.name) + " is reserved; expected another name");
   }
 
-  bool shapeKnown = false;
+  std::optional<ShapeKind> kind;
   const std::string shape = f.string("shape", "", true);
   if (!shape.empty()) {
-    if (auto k = shapeKindFromString(shape)) {
-      e.shape = *k;
-      shapeKnown = true;
-    } else {
-      f.fail(f.at("shape"), "expected one of cube, sphere, box, cylinder, got " + quotedValue(shape));
-    }
+    kind = shapeKindFromString(shape);
+    if (!kind) f.fail(f.at("shape"), "expected one of cube, sphere, box, cylinder, got " + quotedValue(shape));
   }
 
-  if (const json* size = f.get("size", true); size && shapeKnown) {
-    const std::size_t n = sizeCount(e.shape);
-    if (n == 1) {
+  sized = false;
+  if (const json* size = f.get("size", true); size && kind) {
+    std::vector<double> sizes;
+    if (sizeCount(*kind) == 1) {
       const double s = f.checkNumber(*size, f.at("size"), kLength, 0.0);
-      if (s > 0.0) e.size = {s};
+      if (s > 0.0) sizes = {s};
     } else {
-      e.size = f.numbers(*size, f.at("size"), 3, 3, kLength);
+      sizes = f.numbers(*size, f.at("size"), 3, 3, kLength);
+    }
+    if (const auto geometry = ShapeGeometry::fromSizes(*kind, sizes)) {
+      e.geometry = *geometry;
+      sized = true;
     }
   }
 
@@ -291,11 +294,9 @@ void checkOverTable(const EntitySpec& e, const TableSpec& t, std::vector<Problem
 // top. One placed beside its base would be seated at the base's height and
 // float there.
 void checkOverBase(const EntitySpec& e, const EntitySpec& base, std::vector<Problem>& problems) {
-  const auto geometry = ShapeGeometry::fromSizes(base.shape, base.size);
-  if (!geometry) return;  // its size was refused already
-  const auto [hx, hz] = geometry->topFootprint(base.yawDegrees);
+  const auto [hx, hz] = base.geometry.topFootprint(base.yawDegrees);
   const double dx = e.position.x - base.position.x, dz = e.position.z - base.position.z;
-  const bool over = geometry->round() ? std::hypot(dx, dz) <= hx : std::abs(dx) <= hx && std::abs(dz) <= hz;
+  const bool over = base.geometry.round() ? std::hypot(dx, dz) <= hx : std::abs(dx) <= hx && std::abs(dz) <= hz;
   if (over) return;
   problems.push_back({e.path + "/position", "expected a centre over the top of " + quotedName(base.name) +
                                                 " (within " + number(hx) + " m of [" + number(base.position.x) +
@@ -332,11 +333,14 @@ Scenario read(const json& root, std::vector<Problem>& problems) {
                               std::to_string(list->size()));
     } else {
       s.entities.reserve(list->size());
+      std::vector<bool> sized;  // per entity read, as readEntity says
       for (std::size_t i = 0; i < list->size(); ++i) {
-        EntitySpec e = readEntity((*list)[i], "/entities/" + std::to_string(i), names, problems);
+        bool hasSize = false;
+        EntitySpec e = readEntity((*list)[i], "/entities/" + std::to_string(i), names, problems, hasSize);
         checkOverTable(e, s.table, problems);
         const auto base = names.find(e.on);
-        if (base != names.end()) checkOverBase(e, s.entities[base->second], problems);
+        if (base != names.end() && sized[base->second]) checkOverBase(e, s.entities[base->second], problems);
+        sized.push_back(hasSize);
         if (!e.name.empty()) names.emplace(e.name, s.entities.size());
         s.entities.push_back(std::move(e));
       }

@@ -22,8 +22,7 @@ Scenario CubeField::make(int n) {
     const int row = i / columns;
     EntitySpec e;
     e.name = "c" + std::to_string(i);
-    e.shape = ShapeKind::Cube;
-    e.size = {kSide};
+    e.geometry = ShapeGeometry::cube(kSide);
     e.position = {(column - 0.5 * (columns - 1)) * kPitch, 0.0, (row - 0.5 * (rows - 1)) * kPitch};
     e.on = "table";
     e.colour = column % 2 ? Colour{40, 90, 220} : Colour{220, 40, 40};

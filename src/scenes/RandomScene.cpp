@@ -32,8 +32,9 @@ class Draw {
 // Half the largest horizontal extent of a body of this shape and size:
 // the radius of a circle around its centre that holds its footprint at
 // any yaw, m.
-double footprintRadius(ShapeKind shape, const std::vector<double>& size) {
-  switch (shape) {
+double footprintRadius(const ShapeGeometry& g) {
+  const std::vector<double> size = g.sizes();
+  switch (g.kind()) {
     case ShapeKind::Cube: return size[0] * std::sqrt(0.5);
     case ShapeKind::Sphere: return size[0];
     case ShapeKind::SolidBox: return 0.5 * std::hypot(size[0], size[2]);
@@ -44,15 +45,19 @@ double footprintRadius(ShapeKind shape, const std::vector<double>& size) {
 
 EntitySpec randomBody(Draw& draw) {
   EntitySpec e;
-  e.shape = static_cast<ShapeKind>(draw.integer(0, 3));
-  switch (e.shape) {
-    case ShapeKind::Cube: e.size = {draw.uniform(0.02, 0.2)}; break;
-    case ShapeKind::Sphere: e.size = {draw.uniform(0.01, 0.1)}; break;
-    case ShapeKind::SolidBox: e.size = {draw.uniform(0.02, 0.2), draw.uniform(0.02, 0.2), draw.uniform(0.02, 0.2)}; break;
+  const auto kind = static_cast<ShapeKind>(draw.integer(0, 3));
+  // The sizes are drawn in order (a braced list evaluates left to right;
+  // a function's arguments need not).
+  std::vector<double> sizes;
+  switch (kind) {
+    case ShapeKind::Cube: sizes = {draw.uniform(0.02, 0.2)}; break;
+    case ShapeKind::Sphere: sizes = {draw.uniform(0.01, 0.1)}; break;
+    case ShapeKind::SolidBox: sizes = {draw.uniform(0.02, 0.2), draw.uniform(0.02, 0.2), draw.uniform(0.02, 0.2)}; break;
     case ShapeKind::Cylinder:
-      e.size = {draw.uniform(0.01, 0.1), draw.uniform(0.01, 0.1), draw.uniform(0.02, 0.2)};
+      sizes = {draw.uniform(0.01, 0.1), draw.uniform(0.01, 0.1), draw.uniform(0.02, 0.2)};
       break;
   }
+  e.geometry = ShapeGeometry::fromSizes(kind, sizes).value();
   e.mass = draw.logUniform(0.05, 5.0);
   e.material.friction = draw.uniform(0.0, 1.0);
   e.material.restitution = draw.uniform(0.0, 0.9);
@@ -96,12 +101,12 @@ Scenario RandomScene::make(std::uint64_t seed) {
   Layout layout;
   for (int i = 0; i < n; ++i) {
     EntitySpec e = randomBody(draw);
-    const double r = footprintRadius(e.shape, e.size);
+    const double r = footprintRadius(e.geometry);
     // On an earlier flat-topped body with nothing on it yet, centred on it within a centimetre,
     // if its footprint there is clear of the other columns...
     if (draw.chance(0.3)) {
       const int base = draw.integer(0, static_cast<int>(s.entities.size())) - 1;  // -1: none
-      if (base >= 0 && flatTopped(s.entities[base].shape) && !layout.covered[base]) {
+      if (base >= 0 && flatTopped(s.entities[base].geometry.kind()) && !layout.covered[base]) {
         const Vec3& p = s.entities[base].position;
         const double x = p.x + draw.uniform(-0.01, 0.01), z = p.z + draw.uniform(-0.01, 0.01);
         if (layout.clear(s.entities, x, z, r, layout.column[base])) {
@@ -142,7 +147,7 @@ Scenario RandomScene::make(std::uint64_t seed) {
     push.type = Action::Type::Push;
     push.at = t;
     push.arrow.entity = target.name;
-    if (target.shape == ShapeKind::Cube || target.shape == ShapeKind::SolidBox) {
+    if (!target.geometry.round()) {
       push.arrow.face = static_cast<DirectionDef>(draw.integer(0, 3));
     } else {
       push.arrow.angleDegrees = draw.uniform(0.0, 360.0);

@@ -35,12 +35,12 @@ DivergenceGuard::DivergenceGuard(const Scenario& scenario, const Settings& setti
   for (const EntitySpec& e : scenario.entities) {
     names_.push_back(e.name);
     masses_.push_back(e.mass);
-    radii_.push_back(geometryOf(e).boundingRadius());
+    radii_.push_back(e.geometry.boundingRadius());
   }
   if (!masses_.empty()) lightest_ = *std::min_element(masses_.begin(), masses_.end());
   smallest_ = 0.0;
   for (const EntitySpec& e : scenario.entities) {
-    const double r = geometryOf(e).smallestHalfDimension();
+    const double r = e.geometry.smallestHalfDimension();
     smallest_ = smallest_ == 0.0 ? r : std::min(smallest_, r);
   }
   // Potential energy above the floor (y = 0), the lowest any centre can go.

@@ -22,7 +22,7 @@ constexpr double kOverlapTolerance = 1e-5;  // m
 
 std::unique_ptr<Shape> makeShape(const EntitySpec& e) {
   std::unique_ptr<Shape> shape;
-  const ShapeGeometry g = geometryOf(e);
+  const ShapeGeometry g = e.geometry;
   switch (g.kind()) {
     case ShapeKind::Cube: shape = std::make_unique<Cube>(e.name, g.side()); break;
     case ShapeKind::Sphere: shape = std::make_unique<Sphere>(e.name, g.radius()); break;
@@ -78,10 +78,10 @@ std::vector<rules::RuleBody> buildRuleBodies(const Scenario& scenario) {
   std::map<std::string, int> indexOf;
   for (const EntitySpec& e : scenario.entities) {
     // The rules need only the geometry: no Bullet shape is made.
-    const ShapeGeometry g = geometryOf(e);
+    const ShapeGeometry g = e.geometry;
     rules::RuleBody b;
     b.name = e.name;
-    b.shape = e.shape;
+    b.shape = e.geometry.kind();
     b.halfExtents = g.halfExtents();
     b.below = g.below();
     b.above = g.above();

@@ -49,7 +49,7 @@ ViewerSession::ViewerSession(Scenario scenario, Settings settings, ViewerSetting
   }
   if (!found && !scenario_.entities.empty()) {
     arrow_.entity = scenario_.entities.front().name;
-    if (hasFaces(scenario_.entities.front().shape)) arrow_.face = DirectionDef::Left;
+    if (hasFaces(scenario_.entities.front().geometry.kind())) arrow_.face = DirectionDef::Left;
   }
   build(viewer_.playScript);
 }
@@ -82,7 +82,7 @@ void ViewerSession::cycleArrow() {
   }
   arrow_ = Arrow{};
   arrow_.entity = entities[i].name;
-  if (hasFaces(entities[i].shape)) {
+  if (hasFaces(entities[i].geometry.kind())) {
     arrow_.face = kFaces[slot];
   } else {
     arrow_.angleDegrees = kAngles[slot];

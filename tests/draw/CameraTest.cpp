@@ -63,8 +63,7 @@ TEST(Camera, NamedViewsFrameTheTable) {
 TEST(SceneDrawing, ArrowHeadTouchesThePushedFace) {
   EntitySpec cube;
   cube.name = "A";
-  cube.shape = ShapeKind::Cube;
-  cube.size = {0.1};
+  cube.geometry = ShapeGeometry::cube(0.1);
   EntityState state;
   state.position = {0.2, 0.8, -0.1};
   Arrow arrow;

@@ -67,7 +67,7 @@ class Scene {
 };
 
 // Half the entity's size, metres: a cube's half side, a sphere's radius.
-double halfSize(const EntitySpec& e) { return e.shape == ShapeKind::Cube ? 0.5 * e.size.at(0) : e.size.at(0); }
+double halfSize(const EntitySpec& e) { return e.geometry.halfExtents().x; }
 
 // The same length in pixels at `depth` metres from the eye.
 double pixels(double metres, double depth, const Camera& camera, int height = kHeight) {

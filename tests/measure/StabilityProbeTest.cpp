@@ -283,7 +283,7 @@ TEST(HardCase, ReportExamplesAtThirtyHertz) {
 // found is below 1e-9 s): when the spin about the intermediate axis (local
 // Y) first changes sign, the middle of the first flip.
 double referenceFlipTime(const EntitySpec& box) {
-  const double a = box.size.at(0), b = box.size.at(1), c = box.size.at(2);
+  const double a = box.geometry.width(), b = box.geometry.boxHeight(), c = box.geometry.depth();
   const btVector3 I = (box.mass / 12.0) * btVector3(b * b + c * c, a * a + c * c, a * a + b * b);
   const auto rate = [&](const btVector3& w) {
     return btVector3((I.y() - I.z()) * w.y() * w.z() / I.x(), (I.z() - I.x()) * w.z() * w.x() / I.y(),

@@ -28,7 +28,7 @@ TEST(RandomScene, IsDrawnFromItsSeedAlone) {
     const Scenario a = RandomScene::make(seed), b = RandomScene::make(seed);
     ASSERT_EQ(a.entities.size(), b.entities.size());
     for (std::size_t i = 0; i < a.entities.size(); ++i) {
-      EXPECT_EQ(a.entities[i].size, b.entities[i].size);
+      EXPECT_EQ(a.entities[i].geometry.sizes(), b.entities[i].geometry.sizes());
       EXPECT_EQ(a.entities[i].mass, b.entities[i].mass);
       EXPECT_EQ(a.entities[i].on, b.entities[i].on);
     }
@@ -49,7 +49,7 @@ TEST(RandomScene, FirstSceneIsPinned) {
   std::ostringstream text;
   text.precision(6);
   for (const EntitySpec& e : s.entities) {
-    text << e.name << ' ' << static_cast<int>(e.shape) << ' ' << e.size.at(0) << ' ' << e.mass << ' ' << e.on << '\n';
+    text << e.name << ' ' << static_cast<int>(e.geometry.kind()) << ' ' << e.geometry.sizes()[0] << ' ' << e.mass << ' ' << e.on << '\n';
   }
   for (const Action& a : s.script) text << a.arrow.entity << ' ' << *a.at << ' ' << a.magnitude.value << '\n';
   EXPECT_EQ(text.str(),

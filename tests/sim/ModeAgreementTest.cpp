@@ -70,7 +70,7 @@ std::string describeScene(const Scenario& s) {
   std::ostringstream o;
   o << s.file << ":";
   for (const EntitySpec& e : s.entities) {
-    o << " " << e.name << " " << toString(e.shape) << " " << e.size[0] << " at (" << e.position.x << ", "
+    o << " " << e.name << " " << toString(e.geometry.kind()) << " " << e.geometry.sizes()[0] << " at (" << e.position.x << ", "
       << e.position.z << ");";
   }
   for (const Action& a : s.script) {
@@ -96,9 +96,8 @@ class RandomScene {
     for (int i = 0; i < count; ++i) {
       EntitySpec e;
       e.name = std::string(1, static_cast<char>('A' + i));
-      e.shape = spheres ? ShapeKind::Sphere : ShapeKind::Cube;
       const double half = spheres ? uniform(0.02, 0.06) : 0.5 * uniform(0.05, 0.15);
-      e.size = {spheres ? half : 2 * half};
+      e.geometry = spheres ? ShapeGeometry::sphere(half) : ShapeGeometry::cube(2 * half);
       e.on = "table";
       e.mass = 0.5;
       e.material.friction = 0.4;
@@ -138,7 +137,7 @@ class RandomScene {
  private:
   double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng_); }
 
-  static double halfOf(const EntitySpec& e) { return e.shape == ShapeKind::Sphere ? e.size[0] : 0.5 * e.size[0]; }
+  static double halfOf(const EntitySpec& e) { return e.geometry.halfExtents().x; }
 
   bool fits(const Scenario& s, const EntitySpec& e, double half, bool alongX) const {
     for (const EntitySpec& o : s.entities) {
@@ -146,7 +145,7 @@ class RandomScene {
       const double dx = std::abs(e.position.x - o.position.x), dz = std::abs(e.position.z - o.position.z);
       if (std::hypot(dx, dz) < 1.5 * reach) return false;  // clear of each other at the start
       const double across = alongX ? dz : dx;
-      if (e.shape == ShapeKind::Cube && std::abs(across - reach) < 0.01) return false;
+      if (e.geometry.kind() == ShapeKind::Cube && std::abs(across - reach) < 0.01) return false;
     }
     return true;
   }
