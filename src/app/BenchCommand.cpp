@@ -175,11 +175,9 @@ void addBenchOptions(CLI::App& command, BenchOptions& options) {
   command.add_option("--iterations", options.iterations, "Solver iterations to sweep (default 4,10,20,50)")
       ->delimiter(',')
       ->check(CLI::Range(1, 10000));
-  std::map<std::string, Integrator> integrators;
-  for (Integrator i : kAllIntegrators) integrators.emplace(std::string(toString(i)), i);
-  command.add_option("--integrators", options.integrators, "Integrators to sweep (default euler,trapezoid)")
-      ->delimiter(',')
-      ->transform(CLI::CheckedTransformer(integrators));
+  enumOption(command.add_option("--integrators", options.integrators, "Integrators to sweep (default euler,trapezoid)")
+                 ->delimiter(','),
+             kAllIntegrators);
   command.add_flag("--sweep", options.sweep, "Sweep the settings (the default when no section is asked for)");
   command.add_flag("--switches", options.switches,
                    "Measure each model switch (sleeping, legs, floor pairs, broadphase) on every scene");
@@ -190,12 +188,11 @@ void addBenchOptions(CLI::App& command, BenchOptions& options) {
   command.add_flag("--hard", options.hard,
                    "Run each hard case (SCENARIOS/hard) once at its own settings: cost, drift, penetration, "
                    "speed at rest, energy gain");
-  std::map<std::string, SimulationMode> modes;
-  for (SimulationMode m : kAllModes) modes.emplace(std::string(toString(m)), m);
-  command.add_option("--modes", options.modes,
-                     "Modes to sweep (default bullet,compat,rules; compat and rules at the scene's own iterations)")
-      ->delimiter(',')
-      ->transform(CLI::CheckedTransformer(modes));
+  enumOption(command.add_option("--modes", options.modes,
+                                "Modes to sweep (default bullet,compat,rules; compat and rules at the scene's own "
+                                "iterations)")
+                 ->delimiter(','),
+             kAllModes);
 }
 
 namespace {

@@ -1,6 +1,8 @@
 #pragma once
 
+#include <cctype>
 #include <cmath>
+#include <type_traits>
 #include <sstream>
 #include <string>
 
@@ -30,6 +32,37 @@ inline CLI::Validator finiteRange(double lo, double hi) {
         return "";
       },
       "NUMBER from " + range.str());
+}
+
+/// A command-line choice among an enum's names, case-insensitive ("RULES"
+/// is "rules"), shown in help as the names themselves ("rules|compat|bullet")
+/// and refused as "expected rules, compat or bullet, got 'x'". `values`
+/// lists them in help order.
+template <class Enum, std::size_t N>
+CLI::Option* enumOption(CLI::Option* option, const Enum (&values)[N]) {
+  std::string shown, expected;
+  for (std::size_t i = 0; i < N; ++i) {
+    const std::string name(toString(values[i]));
+    shown += (i ? "|" : "") + name;
+    expected += (i == 0 ? "" : i + 1 == N ? " or " : ", ") + name;
+  }
+  const auto lower = [](std::string t) {
+    for (char& c : t) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return t;
+  };
+  CLI::Validator named(
+      [values, expected, lower](std::string& text) -> std::string {
+        for (Enum v : values) {
+          if (lower(std::string(toString(v))) == lower(text)) {
+            // CLI11 reads an enum as its underlying number.
+            text = std::to_string(static_cast<std::underlying_type_t<Enum>>(v));
+            return "";
+          }
+        }
+        return "expected " + expected + ", got '" + shownText(text) + "'";
+      },
+      "");
+  return option->transform(named)->type_name(shown);
 }
 
 }  // namespace tabletop

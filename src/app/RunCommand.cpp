@@ -45,22 +45,19 @@ void warnCutScript(const Scenario& scenario, const Settings& settings, std::vect
 void addRunOptions(CLI::App& command, RunOptions& options, bool withMode) {
   command.add_flag("--json", options.json, "Print the outcome as JSON instead of text");
   if (withMode) {
-    std::map<std::string, SimulationMode> modes;
-    for (SimulationMode m : kAllModes) modes.emplace(std::string(toString(m)), m);
-    command.add_option("--mode", options.mode, "bullet: full physics; compat: Bullet held to the report's rules; "
-                                               "rules: the report's rules alone")
-        ->transform(CLI::CheckedTransformer(modes));
+    enumOption(command.add_option("--mode", options.mode,
+                                  "bullet: full physics (the default); compat: Bullet held to the report's rules; "
+                                  "rules: the report's rules alone"),
+               kAllModes);
   }
   command.add_option("--timestep", options.timestep, "Fixed timestep in seconds (overrides the scenario)")
       ->check(finiteRange(kMinTimestep, kMaxTimestep));
   command.add_option("--iterations", options.iterations, "Solver iterations per step (overrides the scenario)")
       ->check(CLI::Range(1, 10000));
-  std::map<std::string, Integrator> integrators;
-  for (Integrator i : kAllIntegrators) integrators.emplace(std::string(toString(i)), i);
-  command.add_option("--integrator", options.integrator,
-                     "How positions follow velocities: trapezoid (second order, the default) or euler "
-                     "(Bullet's own); overrides the scenario")
-      ->transform(CLI::CheckedTransformer(integrators));
+  enumOption(command.add_option("--integrator", options.integrator,
+                                "How positions follow velocities: trapezoid (second order, the default) or euler "
+                                "(Bullet's own); overrides the scenario"),
+             kAllIntegrators);
   command.add_option("--tolerance", options.tolerance,
                      "Error in metres to meet: picks the cheapest timestep, iterations and integrator the bench's "
                      "front says meet it for the scene's kinds of motion, and says why (overrides the scenario; "

@@ -587,3 +587,24 @@ TEST(CommandLine, RunsFromAnyFolderAndSaysItsVersion) {
 }
 
 }  // namespace
+
+namespace {
+
+using namespace tabletop::testing;
+
+// Choices are names, in any case; a wrong one is refused in words, and help
+// shows the names, not CLI11's mapping to numbers.
+TEST(CommandLine, ChoicesAreNamesInAnyCase) {
+  const std::string example = kScenarios + "example1_single_cube.json";
+  Outcome o = run(kBin + "tabletop run " + example + " --mode RULES --integrator Euler");
+  EXPECT_EQ(o.status, 0) << o.err;
+  EXPECT_NE(o.out.find("mode rules, timestep 0.004167 s, 10 iterations, euler integrator"), std::string::npos) << o.out;
+  o = run(kBin + "tabletop run " + example + " --mode nope");
+  EXPECT_EQ(o.status, 2);
+  EXPECT_NE(o.err.find("--mode: expected rules, compat or bullet, got 'nope'"), std::string::npos) << o.err;
+  o = run(kBin + "tabletop run --help");
+  EXPECT_NE(o.out.find("--mode rules|compat|bullet"), std::string::npos) << o.out;
+  EXPECT_EQ(o.out.find("ENUM:"), std::string::npos) << o.out;
+}
+
+}  // namespace
