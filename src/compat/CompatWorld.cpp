@@ -69,7 +69,7 @@ void CompatWorld::observeReleased() {
   for (std::size_t i = 0; i < shapes.size(); ++i) {
     if (!engine_->released(i) || settled_[i]) continue;
     const Shape& shape = *shapes[i];
-    const bool landed = shape.support() == "ground" &&
+    const bool landed = shape.support() == Support::ground() &&
                         std::abs(shape.body()->getLinearVelocity().y()) < kLandedSpeed;
     if (!landed) {
       landedSince_[i] = -1.0;

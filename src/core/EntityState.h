@@ -5,6 +5,7 @@
 
 #include "core/EntityPositionStatus.h"
 #include "core/ShapeKind.h"
+#include "core/Support.h"
 #include "core/Vec3.h"
 
 namespace tabletop {
@@ -19,7 +20,7 @@ struct EntityState {
   Vec3 linearVelocity;                               ///< m/s
   Vec3 angularVelocity;                              ///< rad/s
   EntityPositionStatus status = EntityPositionStatus::OnTable;
-  std::string support;  ///< "table", "ground", an entity name, or "none"
+  Support support;  ///< what holds it up now
 };
 
 }  // namespace tabletop

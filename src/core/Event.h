@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/DirectionDef.h"
+#include "core/Support.h"
 
 namespace tabletop {
 
@@ -28,7 +29,7 @@ struct Event {
   std::string entity;
   std::string other;      ///< ContactBegin: the second entity
   std::optional<DirectionDef> edge;  ///< LeavesTable: the table edge passed
-  std::string on;                    ///< Lands: "table", "ground" or an entity name
+  Support on;                        ///< Lands: what it landed on
   std::optional<DirectionDef> face;  ///< Push: the face pushed, or nothing for an angle
   double angle = 0.0;     ///< Push: world angle (report 3.8); Rotate: degrees turned
   double impulse = 0.0;   ///< Push: N*s

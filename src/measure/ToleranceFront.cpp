@@ -28,7 +28,7 @@ std::vector<std::string> motionsOf(const Scenario& scene) {
   bool sliding = false, rolling = false, stacked = false;
   for (const EntitySpec& e : scene.entities) {
     (e.geometry.kind() == ShapeKind::Sphere ? rolling : sliding) = true;
-    if (!e.on.empty() && e.on != "table" && e.on != "ground") stacked = true;
+    if (e.on.isEntity()) stacked = true;
   }
   // Anything pushed far enough leaves the table and flies to the floor.
   std::vector<std::string> motions{"flight", "leaving the table"};

@@ -9,6 +9,7 @@
 #include "core/EntityPositionStatus.h"
 #include "core/Material.h"
 #include "core/ShapeKind.h"
+#include "core/Support.h"
 
 namespace tabletop {
 
@@ -84,10 +85,9 @@ class Shape {
   /// Marks the end of the drop (FinishDropSimulation).
   void finishDrop() { status_ = EntityPositionStatus::FinishDropSimulation; }
 
-  /// What this entity rests on: "table", "ground", another entity's name,
-  /// or "none" while nothing holds it up.
-  const std::string& support() const { return support_; }
-  void setSupport(std::string support) { support_ = std::move(support); }
+  /// What this entity rests on; none while nothing holds it up.
+  const Support& support() const { return support_; }
+  void setSupport(Support support) { support_ = std::move(support); }
 
  protected:
   Shape(std::string name, std::unique_ptr<btCollisionShape> shape);
@@ -100,7 +100,7 @@ class Shape {
   std::unique_ptr<btCollisionShape> collisionShape_;
   std::unique_ptr<btRigidBody> body_;
   EntityPositionStatus status_ = EntityPositionStatus::OnTable;
-  std::string support_ = "none";
+  Support support_;
 };
 
 }  // namespace tabletop

@@ -188,26 +188,25 @@ Shape& World::entity(const std::string& name) {
   return *s;
 }
 
-std::string World::participantName(const btCollisionObject* object) const {
-  return participantName(object->getUserIndex());
+Support World::participant(const btCollisionObject* object) const {
+  return participant(object->getUserIndex());
 }
 
-std::string World::participantName(int i) const {
-  if (i == kTableIndex) return "table";
-  if (i == kGroundIndex) return "ground";
-  return entities_.at(static_cast<std::size_t>(i))->name();
+Support World::participant(int i) const {
+  if (i == kTableIndex) return Support::table();
+  if (i == kGroundIndex) return Support::ground();
+  return Support::entity(entities_.at(static_cast<std::size_t>(i))->name());
 }
 
-std::vector<std::pair<std::string, std::string>> World::overlaps(double tolerance) {
+std::vector<std::pair<Support, Support>> World::overlaps(double tolerance) {
   addLegsIfReachable();
   world_->performDiscreteCollisionDetection();
-  std::vector<std::pair<std::string, std::string>> found;
+  std::vector<std::pair<Support, Support>> found;
   for (int m = 0; m < dispatcher_->getNumManifolds(); ++m) {
     const btPersistentManifold* manifold = dispatcher_->getManifoldByIndexInternal(m);
     for (int p = 0; p < manifold->getNumContacts(); ++p) {
       if (manifold->getContactPoint(p).getDistance() < -tolerance) {
-        found.emplace_back(participantName(manifold->getBody0()),
-                           participantName(manifold->getBody1()));
+        found.emplace_back(participant(manifold->getBody0()), participant(manifold->getBody1()));
         break;
       }
     }

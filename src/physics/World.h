@@ -57,7 +57,7 @@ class World : public Simulation {
 
   /// Pairs of bodies ("table" for the table) that interpenetrate by more
   /// than `tolerance` metres in the current state.
-  std::vector<std::pair<std::string, std::string>> overlaps(double tolerance);
+  std::vector<std::pair<Support, Support>> overlaps(double tolerance);
   /// How deep the deepest contact of the last step is, metres (0 if none
   /// penetrates).
   double deepestPenetration() const;
@@ -118,8 +118,8 @@ class World : public Simulation {
   void addLegsIfReachable();
   void observe(bool emit);
   void record(const Event& e);
-  std::string participantName(const btCollisionObject* object) const;
-  std::string participantName(int userIndex) const;
+  Support participant(const btCollisionObject* object) const;
+  Support participant(int userIndex) const;
 
   // One body touching an entity, as observe() gathers them.
   struct Contact {

@@ -119,7 +119,7 @@ void World::observe(bool emit) {
     // A new support that is not the last one means the entity landed.
     if (support[i] != tracker.support) {
       tracker.support = support[i];
-      shape.setSupport(support[i] == kNoSupport ? "none" : participantName(support[i]));
+      shape.setSupport(support[i] == kNoSupport ? Support() : participant(support[i]));
       if (support[i] != kNoSupport) {
         if (emit && support[i] != tracker.lastSupport) {
           Event e;

@@ -89,6 +89,13 @@ Vec3 RuleEngine::velocity(std::size_t i) const {
   return s >= 0 ? ownVelocity(i) + velocity(static_cast<std::size_t>(s)) : ownVelocity(i);
 }
 
+Support RuleEngine::supportOf(int support) const {
+  if (support == kOnTable) return Support::table();
+  if (support == kOnGround) return Support::ground();
+  if (support == kOnNothing) return {};
+  return Support::entity(bodies_.at(static_cast<std::size_t>(support)).name);
+}
+
 std::vector<std::size_t> RuleEngine::riders(std::size_t i) const {
   std::vector<std::size_t> out;
   for (std::size_t k = 0; k < bodies_.size(); ++k) {
@@ -373,9 +380,7 @@ void RuleEngine::land(std::size_t i) {
     if (isDropping(bodies_[r].status)) bodies_[r].status = EntityPositionStatus::FinishDropSimulation;
   }
   Event e = eventAt(now_, EventType::Lands, b.name);
-  e.on = m.landingOn == kOnGround  ? "ground"
-         : m.landingOn == kOnTable ? "table"
-                                   : bodies_[static_cast<std::size_t>(m.landingOn)].name;
+  e.on = supportOf(m.landingOn);
   record(e);
 }
 
@@ -477,10 +482,7 @@ std::vector<EntityState> RuleEngine::snapshot() const {
     s.yawDegrees = b.yawDegrees;
     s.linearVelocity = velocity(i);
     s.status = b.status;
-    s.support = b.support == kOnTable    ? "table"
-                : b.support == kOnGround ? "ground"
-                : b.support == kOnNothing ? "none"
-                                          : bodies_[static_cast<std::size_t>(b.support)].name;
+    s.support = supportOf(b.support);
     out.push_back(s);
   }
   return out;

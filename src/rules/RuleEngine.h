@@ -124,6 +124,7 @@ class RuleEngine : public Simulation {
   void startFall(std::size_t i);
   void land(std::size_t i);
   std::vector<std::size_t> riders(std::size_t i) const;
+  Support supportOf(int support) const;  // a RuleBody's support as a value
   void noteRest();
   void record(Event e);
 

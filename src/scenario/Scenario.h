@@ -12,6 +12,7 @@
 #include "core/ShapeGeometry.h"
 #include "core/ShapeKind.h"
 #include "core/TableSpec.h"
+#include "core/Support.h"
 #include "core/Vec3.h"
 
 namespace tabletop {
@@ -24,7 +25,7 @@ struct EntitySpec {
   std::string name;
   ShapeGeometry geometry = ShapeGeometry::cube(0.1);  ///< its kind and size
   Vec3 position;           ///< centre; y is filled in when `on` is set
-  std::string on;          ///< "table", "ground", an earlier entity, or empty
+  Support on;              ///< what it rests on at the start; none when the position gives a height
   double yawDegrees = 0.0;
   Colour colour;
   double mass = 1.0;       ///< kg

@@ -180,18 +180,19 @@ EntitySpec readEntity(const json& j, const std::string& path, const NameIndex& e
     }
   }
 
-  e.on = f.has("on") ? f.string("on", "") : "";
+  const std::string on = f.has("on") ? f.string("on", "") : "";
+  e.on = Support::named(on);
   if (const json* pos = f.get("position", true)) {
     const auto p = f.numbers(*pos, f.at("position"), 2, 3, kCoordinate);
     if (p.size() == 3) {
       e.position = {p[0], p[1], p[2]};
-      if (!e.on.empty()) f.fail(f.at("on"), "expected no 'on' when the position gives a height [x, y, z]");
+      if (!on.empty()) f.fail(f.at("on"), "expected no 'on' when the position gives a height [x, y, z]");
     } else if (p.size() == 2) {
       e.position = {p[0], 0.0, p[1]};
-      if (e.on.empty()) e.on = "table";
+      if (on.empty()) e.on = Support::table();
     }
   }
-  if (!e.on.empty() && e.on != "table" && e.on != "ground" && !earlier.count(e.on)) {
+  if ((on == "none" || e.on.isEntity()) && !earlier.count(on)) {
     f.fail(f.at("on"), "expected \"table\", \"ground\" or an entity listed before this one, got " +
                            shown(*f.get("on", false)));
   }
@@ -280,7 +281,7 @@ Action readAction(const json& j, const std::string& path, const NameIndex& entit
 // An entity set on the table starts with its centre over the top: one
 // placed beyond an edge would start in mid-air beside the table.
 void checkOverTable(const EntitySpec& e, const TableSpec& t, std::vector<Problem>& problems) {
-  if (e.on != "table") return;
+  if (e.on != Support::table()) return;
   const double halfW = 0.5 * t.width, halfD = 0.5 * t.depth;
   if (std::abs(e.position.x - t.centreX) <= halfW && std::abs(e.position.z - t.centreZ) <= halfD) return;
   problems.push_back({e.path + "/position", "expected a centre over the table top (x from " +
@@ -338,7 +339,7 @@ Scenario read(const json& root, std::vector<Problem>& problems) {
         bool hasSize = false;
         EntitySpec e = readEntity((*list)[i], "/entities/" + std::to_string(i), names, problems, hasSize);
         checkOverTable(e, s.table, problems);
-        const auto base = names.find(e.on);
+        const auto base = names.find(e.on.entityName());
         if (base != names.end() && sized[base->second]) checkOverBase(e, s.entities[base->second], problems);
         sized.push_back(hasSize);
         if (!e.name.empty()) names.emplace(e.name, s.entities.size());

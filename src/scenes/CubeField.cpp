@@ -24,7 +24,7 @@ Scenario CubeField::make(int n) {
     e.name = "c" + std::to_string(i);
     e.geometry = ShapeGeometry::cube(kSide);
     e.position = {(column - 0.5 * (columns - 1)) * kPitch, 0.0, (row - 0.5 * (rows - 1)) * kPitch};
-    e.on = "table";
+    e.on = Support::table();
     e.colour = column % 2 ? Colour{40, 90, 220} : Colour{220, 40, 40};
     e.mass = 0.5;
     e.material = Material{0.4, 0.0, 0.0, 0.5};  // friction 0.4, restitution 0.5

@@ -111,7 +111,7 @@ Scenario RandomScene::make(std::uint64_t seed) {
         const double x = p.x + draw.uniform(-0.01, 0.01), z = p.z + draw.uniform(-0.01, 0.01);
         if (layout.clear(s.entities, x, z, r, layout.column[base])) {
           e.position = {x, 0.0, z};
-          e.on = s.entities[base].name;
+          e.on = Support::entity(s.entities[base].name);
           layout.radius.push_back(r);
           layout.column.push_back(layout.column[base]);
           layout.covered[base] = true;
@@ -120,17 +120,17 @@ Scenario RandomScene::make(std::uint64_t seed) {
     }
     // ... else on the table, clear of every other body (a few tries; a
     // body with no room is left out).
-    for (int attempt = 0; attempt < 20 && e.on.empty(); ++attempt) {
+    for (int attempt = 0; attempt < 20 && e.on.isNone(); ++attempt) {
       const double x = draw.uniform(-0.5 * s.table.width + r, 0.5 * s.table.width - r);
       const double z = draw.uniform(-0.5 * s.table.depth + r, 0.5 * s.table.depth - r);
       if (layout.clear(s.entities, x, z, r, -1)) {
         e.position = {x, 0.0, z};
-        e.on = "table";
+        e.on = Support::table();
         layout.radius.push_back(r);
         layout.column.push_back(static_cast<int>(s.entities.size()));
       }
     }
-    if (e.on.empty()) continue;
+    if (e.on.isNone()) continue;
     layout.covered.push_back(false);
     e.name = "b" + std::to_string(s.entities.size());
     e.path = "/entities/" + std::to_string(s.entities.size());

@@ -165,7 +165,7 @@ nlohmann::json comparisonJson(const Comparison& c) {
       nlohmann::json mode{{"position", {p.x, p.y, p.z}},
                           {"yaw", o.state.yawDegrees},
                           {"status", toString(o.state.status)},
-                          {"support", o.state.support},
+                          {"support", o.state.support.name()},
                           {"verdict", o.verdict}};
       if (o.edge) mode["edge"] = toString(*o.edge);
       if (m > 0) mode["distance_from_rules"] = o.fromRules;

@@ -31,7 +31,7 @@ nlohmann::json eventJson(const Event& e) {
       break;
     case EventType::Rotate: j["angle"] = e.angle; break;
     case EventType::LeavesTable: j["edge"] = e.edge ? toString(*e.edge) : ""; break;
-    case EventType::Lands: j["on"] = e.on; break;
+    case EventType::Lands: j["on"] = e.on.name(); break;
     default: break;
   }
   return j;
@@ -51,7 +51,7 @@ std::string describe(const Event& e) {
     case EventType::ContactBegin: return "contact begins between " + e.entity + " and " + e.other;
     case EventType::LeavesTable:
       return e.entity + " leaves the table (" + std::string(e.edge ? toString(*e.edge) : "") + " edge)";
-    case EventType::Lands: return e.entity + " lands on " + e.on;
+    case EventType::Lands: return e.entity + " lands on " + e.on.name();
     case EventType::AtRest: return e.entity + " comes to rest";
   }
   return "";
@@ -73,7 +73,7 @@ std::string formatText(const RunResult& r) {
     out << "  " << padded(e.name, nameWidth) << padded(std::string(toString(e.shape)), 9)
         << padded(fixed(e.position.x, 4), 9) << padded(fixed(e.position.y, 4), 9)
         << padded(fixed(e.position.z, 4), 9) << padded(fixed(e.yawDegrees, 1), 10)
-        << padded(std::string(toString(e.status)), 22) << e.support << "\n";
+        << padded(std::string(toString(e.status)), 22) << e.support.name() << "\n";
   }
   out << "  events\n";
   for (const Event& e : r.events) out << "    " << padded(fixed(e.t, 3) + " s", 10) << describe(e) << "\n";
@@ -92,7 +92,7 @@ nlohmann::json toJson(const RunResult& r) {
                         {"linear_velocity", {e.linearVelocity.x, e.linearVelocity.y, e.linearVelocity.z}},
                         {"angular_velocity", {e.angularVelocity.x, e.angularVelocity.y, e.angularVelocity.z}},
                         {"status", toString(e.status)},
-                        {"support", e.support}});
+                        {"support", e.support.name()}});
   }
   nlohmann::json events = nlohmann::json::array();
   for (const Event& e : r.events) events.push_back(eventJson(e));

@@ -35,20 +35,22 @@ std::unique_ptr<Shape> makeShape(const EntitySpec& e) {
 
 std::unique_ptr<World> buildWorld(const Scenario& scenario, const Settings& settings) {
   auto world = std::make_unique<World>(settings, scenario.table, scenario.ground);
-  std::map<std::string, std::size_t> indexOf;
+  std::map<Support, std::size_t> indexOf;  // each entity's place in the file
   for (const EntitySpec& e : scenario.entities) {
-    indexOf[e.name] = indexOf.size();
+    indexOf[Support::entity(e.name)] = indexOf.size();
     std::unique_ptr<Shape> shape = makeShape(e);
     btVector3 centre(e.position.x, e.position.y, e.position.z);
     // "on": the entity's lowest point rests on the top of what it names,
     // seated a hair into it (see Seating.h).
-    if (e.on == "table") {
-      centre.setY(seated(scenario.table.height + shape->below()));
-    } else if (e.on == "ground") {
-      centre.setY(seated(shape->below()));
-    } else if (!e.on.empty()) {
-      const Shape* base = world->find(e.on);
-      centre.setY(seated(base->position().y() + base->above() + shape->below()));
+    switch (e.on.kind()) {
+      case Support::Kind::Table: centre.setY(seated(scenario.table.height + shape->below())); break;
+      case Support::Kind::Ground: centre.setY(seated(shape->below())); break;
+      case Support::Kind::Entity: {
+        const Shape* base = world->find(e.on.entityName());
+        centre.setY(seated(base->position().y() + base->above() + shape->below()));
+        break;
+      }
+      case Support::Kind::None: break;
     }
     btRigidBody* body = world->addEntity(std::move(shape), e.mass, e.material, centre, e.yawDegrees).body();
     body->setLinearVelocity(btVector3(e.velocity.x, e.velocity.y, e.velocity.z));
@@ -57,17 +59,17 @@ std::unique_ptr<World> buildWorld(const Scenario& scenario, const Settings& sett
 
   std::vector<Problem> problems;
   // Blame the entity placed later: it was put where another already was.
-  const auto rank = [&](const std::string& name) {
-    auto it = indexOf.find(name);
+  const auto rank = [&](const Support& s) {
+    auto it = indexOf.find(s);
     return it == indexOf.end() ? -1 : static_cast<long>(it->second);
   };
   for (const auto& [a, b] : world->overlaps(kOverlapTolerance)) {
     const bool aLater = rank(a) > rank(b);
-    const std::string& entity = aLater ? a : b;
-    const std::string& other = aLater ? b : a;
+    const Support& entity = aLater ? a : b;
+    const Support& other = aLater ? b : a;
     problems.push_back({scenario.entities[indexOf[entity]].path + "/position",
-                        "expected '" + entity + "' clear of other bodies at the start, but it overlaps " +
-                            (rank(other) >= 0 ? "'" + other + "'" : "the " + other)});
+                        "expected '" + entity.name() + "' clear of other bodies at the start, but it overlaps " +
+                            (other.isEntity() ? "'" + other.name() + "'" : "the " + other.name())});
   }
   if (!problems.empty()) throw ScenarioError(scenario, std::move(problems));
   return world;
@@ -88,16 +90,22 @@ std::vector<rules::RuleBody> buildRuleBodies(const Scenario& scenario) {
     b.position = e.position;
     b.yawDegrees = e.yawDegrees;
     b.support = rules::kOnNothing;
-    if (e.on == "table") {
-      b.position.y = scenario.table.height + b.below;
-      b.support = rules::kOnTable;
-    } else if (e.on == "ground") {
-      b.position.y = b.below;
-      b.support = rules::kOnGround;
-    } else if (!e.on.empty()) {
-      const int base = indexOf.at(e.on);
-      b.position.y = bodies[static_cast<std::size_t>(base)].top() + b.below;
-      b.support = base;
+    switch (e.on.kind()) {
+      case Support::Kind::Table:
+        b.position.y = scenario.table.height + b.below;
+        b.support = rules::kOnTable;
+        break;
+      case Support::Kind::Ground:
+        b.position.y = b.below;
+        b.support = rules::kOnGround;
+        break;
+      case Support::Kind::Entity: {
+        const int base = indexOf.at(e.on.entityName());
+        b.position.y = bodies[static_cast<std::size_t>(base)].top() + b.below;
+        b.support = base;
+        break;
+      }
+      case Support::Kind::None: break;
     }
     indexOf[e.name] = static_cast<int>(bodies.size());
     bodies.push_back(b);

@@ -193,7 +193,7 @@ std::vector<std::string> ViewerSession::overlay() const {
                   (rotationTarget_ == RotationTarget::TableAndEntities ? "table and entities" : "entities on the table"));
   for (const EntityState& s : simulation_->snapshot()) {
     lines.push_back("  " + s.name + "  " + std::string(toString(s.status)) + "  (" + fixed(s.position.x, 3) + ", " +
-                    fixed(s.position.y, 3) + ", " + fixed(s.position.z, 3) + ") m  on " + s.support);
+                    fixed(s.position.y, 3) + ", " + fixed(s.position.z, 3) + ") m  on " + s.support.name());
   }
   if (!message_.empty()) lines.push_back("> " + message_);
   return lines;

@@ -43,7 +43,8 @@ TEST(CollisionPredicate, AgreesWithBulletContactsOutsideTheMarginBand) {
     world.addEntity(std::make_unique<Cube>("A", s1), 1.0, Material{}, btVector3(c1.x, seated(top + s1 / 2), c1.z), 0);
     world.addEntity(std::make_unique<Cube>("B", s2), 1.0, Material{}, btVector3(c2.x, seated(top + s2 / 2), c2.z), 0);
     bool bulletSays = false;
-    for (const auto& [a, b] : world.overlaps(0.0)) bulletSays |= (a == "A" && b == "B") || (a == "B" && b == "A");
+    const Support A = Support::entity("A"), B = Support::entity("B");
+    for (const auto& [a, b] : world.overlaps(0.0)) bulletSays |= (a == A && b == B) || (a == B && b == A);
     const bool rulesSay = rules::cubesCollide(c1, s1, c2, s2, rules::ForceAxis::X);
     EXPECT_EQ(bulletSays, rulesSay) << "cubes " << s1 << " and " << s2 << " m, offset (" << c2.x << ", " << c2.z << ")";
     ++compared;

@@ -43,8 +43,8 @@ TEST_F(PhysicsFixture, SmallBodiesRestAtTheirTrueHeight) {
   EXPECT_NEAR(cube.position().y(), top + 0.015, 1e-6);
   EXPECT_NEAR(ball.position().y(), top + 0.02, 1e-6);
   EXPECT_NEAR(floorCube.position().y(), 0.01, 1e-6);
-  EXPECT_EQ(cube.support(), "table");
-  EXPECT_EQ(floorCube.support(), "ground");
+  EXPECT_EQ(cube.support().name(), "table");
+  EXPECT_EQ(floorCube.support().name(), "ground");
   EXPECT_TRUE(w.events().empty());
 }
 
@@ -81,7 +81,7 @@ TEST_F(PhysicsFixture, CubePushedOffTheEdgeDropsAndFinishes) {
   }
   EXPECT_TRUE(sawDrop);
   EXPECT_EQ(c.status(), EntityPositionStatus::FinishDropSimulation);
-  EXPECT_EQ(c.support(), "ground");
+  EXPECT_EQ(c.support().name(), "ground");
   EXPECT_NEAR(c.position().y(), 0.05, 1e-3);
   EXPECT_EQ(typesOf(w.events(), "A"), (std::vector<EventType>{EventType::Push, EventType::LeavesTable,
                                                                 EventType::Lands, EventType::AtRest}));
@@ -99,7 +99,7 @@ TEST_F(PhysicsFixture, StackedCubeIsSupportedByTheCubeBelow) {
   Shape& small = w.addEntity(std::make_unique<Cube>("small", 0.08), 0.3, Material{},
                              btVector3(0, seated(seated(top + 0.1) + 0.14), 0), 0);
   simulate(1.0);
-  EXPECT_EQ(small.support(), "big");
+  EXPECT_EQ(small.support().name(), "big");
   EXPECT_NEAR(small.position().y(), top + 0.24, 1e-6);
   EXPECT_TRUE(w.events().empty());
 }
@@ -126,7 +126,7 @@ TEST_F(PhysicsFixture, OverlapsAreFound) {
   const auto found = w.overlaps(1e-5);
   ASSERT_EQ(found.size(), 2u);
   std::vector<std::string> names;
-  for (const auto& [a, b] : found) names.push_back(std::min(a, b) + "-" + std::max(a, b));
+  for (const auto& [a, b] : found) names.push_back(std::min(a.name(), b.name()) + "-" + std::max(a.name(), b.name()));
   std::sort(names.begin(), names.end());
   EXPECT_EQ(names, (std::vector<std::string>{"A-B", "C-table"}));
 }

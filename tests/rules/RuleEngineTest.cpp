@@ -140,7 +140,7 @@ TEST(RuleEngine, APushedUpperCubeSlidesOffItsBaseOntoTheTable) {
   // It falls 0.2 m from rest: t = sqrt(2 h / g) after clearing.
   const Event* lands = first(*e, EventType::Lands, "Small");
   ASSERT_NE(lands, nullptr);
-  EXPECT_EQ(lands->on, "table");
+  EXPECT_EQ(lands->on, Support::table());
   EXPECT_NEAR(lands->t, 0.14 / RuleEngine::kDriveSpeed + std::sqrt(2 * 0.2 / 9.81), 1e-6);
 }
 

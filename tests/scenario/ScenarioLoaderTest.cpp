@@ -49,13 +49,13 @@ TEST(ScenarioLoader, ReadsEveryField) {
   EXPECT_DOUBLE_EQ(s.settings.timestep, 0.005);
   EXPECT_EQ(s.settings.iterations, Settings{}.iterations);
   ASSERT_EQ(s.entities.size(), 3u);
-  EXPECT_EQ(s.entities[0].on, "table");  // [x, z] means on the table
+  EXPECT_EQ(s.entities[0].on, Support::table());  // [x, z] means on the table
   EXPECT_DOUBLE_EQ(s.entities[0].position.z, -0.1);
   EXPECT_DOUBLE_EQ(s.entities[0].material.friction, 0.3);
   EXPECT_EQ(s.entities[0].colour.b, 3);
-  EXPECT_EQ(s.entities[1].on, "A");
+  EXPECT_EQ(s.entities[1].on, Support::entity("A"));
   EXPECT_DOUBLE_EQ(s.entities[1].material.spinningFriction, 0.001);  // follows rolling friction
-  EXPECT_TRUE(s.entities[2].on.empty());
+  EXPECT_TRUE(s.entities[2].on.isNone());
   EXPECT_DOUBLE_EQ(s.entities[2].position.y, 0.5);
   ASSERT_EQ(s.script.size(), 5u);
   EXPECT_EQ(s.script[0].arrow.face, DirectionDef::Front);

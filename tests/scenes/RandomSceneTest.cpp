@@ -49,7 +49,7 @@ TEST(RandomScene, FirstSceneIsPinned) {
   std::ostringstream text;
   text.precision(6);
   for (const EntitySpec& e : s.entities) {
-    text << e.name << ' ' << static_cast<int>(e.geometry.kind()) << ' ' << e.geometry.sizes()[0] << ' ' << e.mass << ' ' << e.on << '\n';
+    text << e.name << ' ' << static_cast<int>(e.geometry.kind()) << ' ' << e.geometry.sizes()[0] << ' ' << e.mass << ' ' << e.on.name() << '\n';
   }
   for (const Action& a : s.script) text << a.arrow.entity << ' ' << *a.at << ' ' << a.magnitude.value << '\n';
   EXPECT_EQ(text.str(),

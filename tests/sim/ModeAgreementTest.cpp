@@ -98,7 +98,7 @@ class RandomScene {
       e.name = std::string(1, static_cast<char>('A' + i));
       const double half = spheres ? uniform(0.02, 0.06) : 0.5 * uniform(0.05, 0.15);
       e.geometry = spheres ? ShapeGeometry::sphere(half) : ShapeGeometry::cube(2 * half);
-      e.on = "table";
+      e.on = Support::table();
       e.mass = 0.5;
       e.material.friction = 0.4;
       e.path = "/entities/" + std::to_string(i);
