@@ -13,6 +13,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "app/BenchTables.h"
 #include "app/DataPaths.h"
 #include "app/GnuplotFile.h"
 #include "app/NumberOption.h"
@@ -78,83 +79,6 @@ MeasureHooks hooks(const InterruptGuard& interrupt, Progress& progress) {
           [&progress](const std::string& done) { progress.advance(done); }};
 }
 
-std::string table(const std::vector<BenchPoint>& points, const std::string& scene, bool analytic) {
-  std::ostringstream o;
-  o << scene << "  (error against " << (analytic ? "the closed form" : "full physics at 4000 Hz, 50 iterations, trapezoid") << ")\n";
-  o << "  " << padded("mode", 8) << padded("rate [Hz]", 11) << padded("iterations", 12) << padded("integrator", 12)
-    << padded("cost [ms/s]", 13)
-    << padded("spread", 9) << padded("error [mm]", 12) << "front\n";
-  std::vector<BenchPoint> rows;
-  for (const BenchPoint& p : points) {
-    if (p.scene == scene) rows.push_back(p);
-  }
-  std::sort(rows.begin(), rows.end(), [](const BenchPoint& a, const BenchPoint& b) { return a.costMs < b.costMs; });
-  for (const BenchPoint& p : rows) {
-    o << "  " << padded(std::string(toString(p.mode)), 8) << padded(fixed(1.0 / p.timestep, 0), 11) << padded(std::to_string(p.iterations), 12)
-      << padded(std::string(toString(p.integrator)), 12) << padded(fixed(p.costMs, 3), 13) << padded(fixed(100.0 * p.spread, 0) + "%", 9)
-      << padded(p.complete ? fixed(1000.0 * p.error, 4) : std::string("diverged"), 12) << (p.front ? "*" : "")
-      << "\n";
-  }
-  return o.str();
-}
-
-std::string csv(const std::vector<BenchPoint>& points) {
-  std::ostringstream o;
-  o << std::setprecision(9)
-    << "scene,mode,rate_hz,timestep_s,iterations,integrator,cost_ms_per_s,spread,error_m,complete,front\n";
-  for (const BenchPoint& p : points) {
-    o << p.scene << "," << toString(p.mode) << "," << 1.0 / p.timestep << "," << p.timestep << "," << p.iterations << "," << toString(p.integrator)
-      << "," << p.costMs << ","
-      << p.spread << "," << p.error << "," << p.complete << "," << p.front << "\n";
-  }
-  return o.str();
-}
-
-// The curve a point belongs to: in bullet mode its integrator and
-// iterations, otherwise its mode alone.
-std::string family(const BenchPoint& p) {
-  if (p.mode != SimulationMode::Bullet) return std::string(toString(p.mode));
-  return std::string(toString(p.integrator)) + ", " + std::to_string(p.iterations) + " iterations";
-}
-
-// error [mm] against cost [ms per simulated second], log-log, one curve
-// per family, the front circled.
-std::string plotScript(const std::vector<BenchPoint>& points, const std::string& scene) {
-  std::ostringstream g;
-  g << std::setprecision(9);
-  g << "set title " << gnuplotQuoted(scene + ": error against cost (Bullet, double)") << " noenhanced\n";
-  g << "set logscale xy\nset grid\nset key top right\n";
-  g << "set xlabel 'wall time per simulated second [ms]'\nset ylabel 'error [mm]'\n";
-  std::vector<std::string> families;
-  for (const BenchPoint& p : points) {
-    if (p.scene == scene && std::find(families.begin(), families.end(), family(p)) == families.end()) {
-      families.push_back(family(p));
-    }
-  }
-  std::vector<std::string> curves;
-  for (std::size_t f = 0; f < families.size(); ++f) {
-    const std::string block = "$family" + std::to_string(f);
-    g << block << " << EOD\n";
-    for (const BenchPoint& p : points) {
-      if (p.scene == scene && family(p) == families[f] && p.complete) {
-        g << p.costMs << " " << std::max(1e-6, 1000.0 * p.error) << " " << 1.0 / p.timestep << "\n";
-      }
-    }
-    g << "EOD\n";
-    curves.push_back(block + " using 1:2 with linespoints title " + gnuplotQuoted(families[f]));
-  }
-  g << "$front << EOD\n";
-  for (const BenchPoint& p : points) {
-    if (p.scene == scene && p.front) g << p.costMs << " " << std::max(1e-6, 1000.0 * p.error) << "\n";
-  }
-  g << "EOD\n";
-  curves.push_back("$front using 1:2 with points pt 6 ps 2.5 lc rgb 'black' title 'Pareto front'");
-  g << "plot ";
-  for (std::size_t i = 0; i < curves.size(); ++i) g << (i ? ", \\\n     " : "") << curves[i];
-  g << "\n";
-  return g.str();
-}
-
 }  // namespace
 
 void addBenchOptions(CLI::App& command, BenchOptions& options) {
@@ -194,122 +118,6 @@ void addBenchOptions(CLI::App& command, BenchOptions& options) {
                  ->delimiter(','),
              kAllModes);
 }
-
-namespace {
-
-
-
-
-std::string signedPercent(double ratio) {
-  const double p = 100.0 * (ratio - 1.0);
-  return (p >= 0 ? "+" : "") + fixed(p, 0) + "%";
-}
-
-
-std::string switchTable(const std::vector<SwitchPoint>& points) {
-  std::ostringstream o;
-  o << "Model switches (full physics, each scene at its own settings; cost and error as in the sweep)\n";
-  o << "  " << padded("scene", 26) << padded("switch", 26) << padded("cost [ms/s]", 13) << padded("vs defaults", 13)
-    << padded("error [mm]", 12) << "outcome\n";
-  double base = 0.0;
-  for (const SwitchPoint& p : points) {
-    if (p.name == "defaults") base = p.costMs;
-    o << "  " << padded(p.scene, 26) << padded(p.name, 26) << padded(fixed(p.costMs, 3), 13)
-      << padded(p.name == "defaults" ? std::string("") : signedPercent(p.costMs / base), 13)
-      << padded(p.complete ? fixed(1000.0 * p.error, 4) : std::string("diverged"), 12)
-      << (p.name == "defaults" ? "" : p.sameState ? "bit-identical" : "differs") << "\n";
-  }
-  return o.str();
-}
-
-std::string switchCsv(const std::vector<SwitchPoint>& points) {
-  std::ostringstream o;
-  o << std::setprecision(9) << "scene,switch,cost_ms_per_s,spread,error_m,same_state,complete\n";
-  for (const SwitchPoint& p : points) {
-    o << p.scene << "," << p.name << "," << p.costMs << "," << p.spread << "," << p.error << "," << p.sameState << ","
-      << p.complete << "\n";
-  }
-  return o.str();
-}
-
-std::string scaleCsv(const std::vector<ScalePoint>& points) {
-  std::ostringstream o;
-  o << std::setprecision(9) << "cubes,switch,ms_per_step,spread,difference_m,same_state,complete\n";
-  for (const ScalePoint& p : points) {
-    o << p.cubes << "," << p.name << "," << p.msPerStep << "," << p.spread << "," << p.difference << "," << p.sameState
-      << "," << p.complete << "\n";
-  }
-  return o.str();
-}
-
-
-
-
-nlohmann::json hardJson(const HardPoint& p) {
-  const StabilityReport& r = p.report;
-  return {{"scene", p.scene}, {"timestep", p.settings.timestep}, {"iterations", p.settings.iterations},
-          {"cost_ms_per_s", r.cost()}, {"worst_drift_m", r.worstDrift}, {"worst_penetration_m", r.worstPenetration},
-          {"rest_speed_m_per_s", r.restSpeed}, {"energy_gain_j", r.energyGain}, {"energy_scale_j", r.energyScale},
-          {"complete", r.complete}, {"failure", r.failure}};
-}
-
-std::string hardCsv(const std::vector<HardPoint>& points) {
-  std::ostringstream o;
-  o << std::setprecision(17)
-    << "scene,timestep_s,iterations,cost_ms_per_s,worst_drift_m,worst_penetration_m,rest_speed_m_per_s,energy_gain_j,"
-       "energy_scale_j,complete\n";
-  for (const HardPoint& p : points) {
-    const StabilityReport& r = p.report;
-    o << p.scene << "," << p.settings.timestep << "," << p.settings.iterations << "," << r.cost() << ","
-      << r.worstDrift << "," << r.worstPenetration << "," << r.restSpeed << "," << r.energyGain << ","
-      << r.energyScale << "," << (r.complete ? 1 : 0) << "\n";
-  }
-  return o.str();
-}
-
-std::string hardTable(const std::vector<HardPoint>& points) {
-  std::ostringstream o;
-  o << "Hard cases (full physics, each at its own settings, one run)\n";
-  std::size_t width = 5;
-  for (const HardPoint& p : points) width = std::max(width, p.scene.size());
-  o << "  " << std::left << std::setw(static_cast<int>(width)) << "scene"
-    << "  rate [Hz]  iterations  cost [ms/s]  drift [mm]  penetration [mm]  rest [mm/s]  energy gain\n";
-  for (const HardPoint& p : points) {
-    const StabilityReport& r = p.report;
-    o << "  " << std::setw(static_cast<int>(width)) << p.scene << "  " << std::setw(9)
-      << fixed(1.0 / p.settings.timestep, 0) << "  " << std::setw(10) << p.settings.iterations << "  "
-      << std::setw(11) << fixed(r.cost(), 2) << "  " << std::setw(10) << fixed(1e3 * r.worstDrift, 3) << "  "
-      << std::setw(16) << fixed(1e3 * r.worstPenetration, 3) << "  " << std::setw(11) << fixed(1e3 * r.restSpeed, 4)
-      << "  " << (r.energyScale > 0 ? fixed(100.0 * r.energyGain / r.energyScale, 3) + "%" : "0")
-      << (r.complete ? "" : "  diverged: " + r.failure) << "\n";
-  }
-  return o.str();
-}
-
-std::string scaleTable(const std::vector<ScalePoint>& points) {
-  std::ostringstream o;
-  const Scenario any = CubeField::make(1);
-  o << "Scale: the cube field (0.1 m cubes " << fixed(CubeField::kPitch, 2)
-    << " m apart, every other column pushed into the next), " << fixed(CubeField::kDuration, 1) << " s at "
-    << fixed(1.0 / any.settings.timestep, 0) << " Hz, " << any.settings.iterations << " iterations, "
-    << toString(any.settings.integrator) << "\n";
-  o << "  " << padded("cubes", 8) << padded("switch", 26) << padded("ms/step", 11) << padded("us/cube", 10)
-    << padded("spread", 9) << padded("vs defaults", 13) << padded("moved [mm]", 12) << "outcome\n";
-  double base = 0.0;
-  for (const ScalePoint& p : points) {
-    if (p.name == "defaults") base = p.msPerStep;
-    o << "  " << padded(std::to_string(p.cubes), 8) << padded(p.name, 26) << padded(fixed(p.msPerStep, 3), 11)
-      << padded(fixed(1000.0 * p.msPerStep / p.cubes, 2), 10) << padded(fixed(100.0 * p.spread, 0) + "%", 9)
-      << padded(p.name == "defaults" ? std::string("") : signedPercent(p.msPerStep / base), 13)
-      << padded(p.name == "defaults" ? std::string("") : fixed(1000.0 * p.difference, 4), 12)
-      << (!p.complete ? "diverged" : p.name == "defaults" ? "" : p.sameState ? "bit-identical" : "differs") << "\n";
-  }
-  o << "  growth exponent k of time per step ~ cubes^k (least squares over the sizes):\n";
-  for (const auto& [name, k] : exponents(points)) o << "    " << padded(name, 26) << fixed(k, 2) << "\n";
-  return o.str();
-}
-
-}  // namespace
 
 int runBench(const BenchOptions& asked, std::ostream& out, std::ostream& err) {
   BenchOptions options = asked;
@@ -374,47 +182,32 @@ int runBench(const BenchOptions& asked, std::ostream& out, std::ostream& err) {
   }
 
   if (options.json) {
-    nlohmann::json all = nlohmann::json::array();
-    for (const BenchPoint& p : points) {
-      all.push_back({{"scene", p.scene}, {"mode", toString(p.mode)}, {"timestep", p.timestep}, {"iterations", p.iterations},
-                     {"integrator", toString(p.integrator)},
-                     {"cost_ms_per_s", p.costMs}, {"spread", p.spread}, {"error_m", p.error},
-                     {"complete", p.complete}, {"front", p.front}});
-    }
-    nlohmann::json switches = nlohmann::json::array();
-    for (const SwitchPoint& p : switchPoints) {
-      switches.push_back({{"scene", p.scene}, {"switch", p.name}, {"cost_ms_per_s", p.costMs}, {"spread", p.spread},
-                          {"error_m", p.error}, {"same_state", p.sameState}, {"complete", p.complete}});
-    }
-    nlohmann::json scale = nlohmann::json::array();
-    for (const ScalePoint& p : scalePoints) {
-      scale.push_back({{"cubes", p.cubes}, {"switch", p.name}, {"ms_per_step", p.msPerStep}, {"spread", p.spread},
-                       {"difference_m", p.difference}, {"same_state", p.sameState}, {"complete", p.complete}});
-    }
-    nlohmann::json hard = nlohmann::json::array();
-    for (const HardPoint& p : hardPoints) hard.push_back(hardJson(p));
-    out << nlohmann::json{{"sweep", all}, {"switches", switches}, {"scale", scale},
-                          {"growth_exponents", exponents(scalePoints)}, {"hard", hard}}
+    out << nlohmann::json{{"sweep", toJson(sweepTable(points))},
+                          {"switches", toJson(switchTable(switchPoints))},
+                          {"scale", toJson(scaleTable(scalePoints))},
+                          {"growth_exponents", exponents(scalePoints)},
+                          {"hard", toJson(hardTable(hardPoints))}}
                .dump(2)
         << "\n";
   } else {
     const char* gap = "";
     if (sweepAsked) {
       for (std::size_t i = 0; i < scenes.size(); ++i) {
-        out << (i ? "\n" : "") << table(points, scenes[i].name(), scenes[i].analytic());
-        for (const std::string& line : skipped[scenes[i].name()]) out << "  (" << line << ")\n";
+        ResultTable t = sweepTable(points, scenes[i].name(), scenes[i].analytic());
+        for (const std::string& line : skipped[scenes[i].name()]) t.notes.push_back("(" + line + ")");
+        out << (i ? "\n" : "") << toText(t);
       }
       gap = "\n";
     }
     if (!switchPoints.empty()) {
-      out << gap << switchTable(switchPoints);
+      out << gap << toText(switchTable(switchPoints));
       gap = "\n";
     }
     if (!scalePoints.empty()) {
-      out << gap << scaleTable(scalePoints);
+      out << gap << toText(scaleTable(scalePoints));
       gap = "\n";
     }
-    if (!hardPoints.empty()) out << gap << hardTable(hardPoints);
+    if (!hardPoints.empty()) out << gap << toText(hardTable(hardPoints));
   }
   int status = kExitOk;
   if (options.frontFile && sweepAsked && !interrupt.requested()) {
@@ -427,17 +220,17 @@ int runBench(const BenchOptions& asked, std::ostream& out, std::ostream& err) {
   if (options.outDir) {
     const std::filesystem::path dir(*options.outDir);
     std::string problem;
-    if (sweepAsked) problem = AtomicFile::write((dir / "bench.csv").string(), csv(points));
-    if (problem.empty() && !switchPoints.empty()) {
-      problem = AtomicFile::write((dir / "switches.csv").string(), switchCsv(switchPoints));
+    const std::pair<const char*, ResultTable> sections[] = {
+        {"bench.csv", sweepAsked ? sweepTable(points) : ResultTable{}},
+        {"switches.csv", switchTable(switchPoints)},
+        {"scale.csv", scaleTable(scalePoints)},
+        {"hard.csv", hardTable(hardPoints)}};
+    for (const auto& [file, table] : sections) {
+      if (problem.empty() && !table.rows.empty()) problem = AtomicFile::write((dir / file).string(), toCsv(table));
     }
-    if (problem.empty() && !scalePoints.empty()) {
-      problem = AtomicFile::write((dir / "scale.csv").string(), scaleCsv(scalePoints));
-    }
-    if (problem.empty() && !hardPoints.empty()) problem = AtomicFile::write((dir / "hard.csv").string(), hardCsv(hardPoints));
     for (std::size_t i = 0; sweepAsked && problem.empty() && i < scenes.size(); ++i) {
       problem = writeGnuplotFile((dir / ("bench_" + scenes[i].name() + ".png")).string(),
-                                 plotScript(points, scenes[i].name()), 900, 640);
+                                 sweepPlotScript(points, scenes[i].name()), 900, 640);
     }
     if (!problem.empty()) {
       err << "tabletop bench: " << problem << "\n";

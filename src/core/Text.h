@@ -26,6 +26,12 @@ std::string shownText(std::string_view s, std::size_t maxBytes = 64);
 /// holds a comma, a quote or a line break; as it is otherwise.
 std::string csvField(std::string_view s);
 
+/// `v` with `digits` decimals ("%.*f").
+std::string fixed(double v, int digits);
+
+/// `s` padded with spaces to `width` columns, and at least one space after.
+std::string padded(const std::string& s, std::size_t width);
+
 /// Whether `s` ends with `suffix`.
 bool endsWith(std::string_view s, std::string_view suffix);
 

@@ -8,16 +8,6 @@
 
 namespace tabletop {
 
-std::string fixed(double v, int digits) {
-  char text[64];
-  std::snprintf(text, sizeof text, "%.*f", digits, v);
-  return text;
-}
-
-std::string padded(const std::string& s, std::size_t width) {
-  return s.size() >= width ? s + " " : s + std::string(width - s.size(), ' ');
-}
-
 namespace {
 
 nlohmann::json eventJson(const Event& e) {

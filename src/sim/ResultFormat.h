@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/RunResult.h"
+#include "core/Text.h"
 
 namespace tabletop {
 
@@ -14,12 +15,6 @@ std::string formatText(const RunResult& result);
 
 /// The outcome as one JSON object (documented in scenarios/README.md).
 nlohmann::json toJson(const RunResult& result);
-
-/// `v` with `digits` decimals ("%.*f").
-std::string fixed(double v, int digits);
-
-/// `s` padded with spaces to `width` columns, and at least one space after.
-std::string padded(const std::string& s, std::size_t width);
 
 /// One event as a readable phrase ("push A Left, step 0.200 m ...").
 std::string describe(const Event& event);

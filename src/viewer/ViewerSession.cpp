@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "core/Text.h"
 #include "draw/SceneDrawing.h"
 #include "sim/SceneBuilder.h"
 
@@ -22,12 +23,6 @@ constexpr double kRateWindow = 0.5;       // wall seconds per real-time factor
 constexpr double kSlowest = 1.0 / 64.0, kFastest = 4.0;
 
 bool hasFaces(ShapeKind k) { return k == ShapeKind::Cube || k == ShapeKind::SolidBox; }
-
-std::string fixed(double v, int digits) {
-  char text[48];
-  std::snprintf(text, sizeof text, "%.*f", digits, v);
-  return text;
-}
 
 }  // namespace
 

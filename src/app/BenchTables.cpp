@@ -1,0 +1,184 @@
+#include "app/BenchTables.h"
+
+#include <algorithm>
+#include <iomanip>
+#include <sstream>
+
+#include "app/GnuplotFile.h"
+#include "core/Text.h"
+#include "scenes/CubeField.h"
+
+namespace tabletop {
+namespace {
+
+using Column = ResultTable::Column;
+using Cell = ResultTable::Cell;
+
+std::string signedPercent(double ratio) {
+  const double p = 100.0 * (ratio - 1.0);
+  return (p >= 0 ? "+" : "") + fixed(p, 0) + "%";
+}
+
+Cell percent(double fraction) { return cell(fraction, fixed(100.0 * fraction, 0) + "%"); }
+
+// An error in metres, shown in millimetres, or "diverged".
+Cell errorCell(double metres, bool complete, int digits = 4) {
+  return cell(metres, complete ? fixed(1000.0 * metres, digits) : std::string("diverged"));
+}
+
+Cell flag(bool value, const std::string& shown) { return cell(value, shown); }
+
+std::string name(SimulationMode m) { return std::string(toString(m)); }
+std::string name(Integrator i) { return std::string(toString(i)); }
+
+}  // namespace
+
+ResultTable sweepTable(const std::vector<BenchPoint>& points) {
+  ResultTable t;
+  t.columns = {{"scene", ""},
+               {"mode", "mode"},
+               {"rate_hz", "rate [Hz]"},
+               {"timestep_s", ""},
+               {"iterations", "iterations"},
+               {"integrator", "integrator"},
+               {"cost_ms_per_s", "cost [ms/s]"},
+               {"spread", "spread"},
+               {"error_m", "error [mm]"},
+               {"complete", ""},
+               {"front", "front"}};
+  for (const BenchPoint& p : points) {
+    t.rows.push_back({cell(p.scene), cell(name(p.mode)), cell(1.0 / p.timestep, 0), cell(p.timestep, 6),
+                      cell(p.iterations, std::to_string(p.iterations)), cell(name(p.integrator)), cell(p.costMs, 3),
+                      percent(p.spread), errorCell(p.error, p.complete), flag(p.complete, ""),
+                      flag(p.front, p.front ? "*" : "")});
+  }
+  return t;
+}
+
+ResultTable sweepTable(const std::vector<BenchPoint>& points, const std::string& scene, bool analytic) {
+  std::vector<BenchPoint> rows;
+  for (const BenchPoint& p : points) {
+    if (p.scene == scene) rows.push_back(p);
+  }
+  std::stable_sort(rows.begin(), rows.end(), [](const BenchPoint& a, const BenchPoint& b) { return a.costMs < b.costMs; });
+  ResultTable t = sweepTable(rows);
+  t.title = scene + "  (error against " +
+            (analytic ? "the closed form" : "full physics at 4000 Hz, 50 iterations, trapezoid") + ")";
+  return t;
+}
+
+ResultTable switchTable(const std::vector<SwitchPoint>& points) {
+  ResultTable t;
+  t.title = "Model switches (full physics, each scene at its own settings; cost and error as in the sweep)";
+  t.columns = {{"scene", "scene"},         {"switch", "switch"},        {"cost_ms_per_s", "cost [ms/s]"},
+               {"spread", ""},             {"", "vs defaults"},         {"error_m", "error [mm]"},
+               {"same_state", "outcome"},  {"complete", ""}};
+  double base = 0.0;
+  for (const SwitchPoint& p : points) {
+    const bool defaults = p.name == "defaults";
+    if (defaults) base = p.costMs;
+    t.rows.push_back({cell(p.scene), cell(p.name), cell(p.costMs, 3), percent(p.spread),
+                      cell(nullptr, defaults ? "" : signedPercent(p.costMs / base)), errorCell(p.error, p.complete),
+                      flag(p.sameState, defaults ? "" : p.sameState ? "bit-identical" : "differs"),
+                      flag(p.complete, "")});
+  }
+  return t;
+}
+
+ResultTable scaleTable(const std::vector<ScalePoint>& points) {
+  ResultTable t;
+  const Scenario any = CubeField::make(1);
+  t.title = "Scale: the cube field (0.1 m cubes " + fixed(CubeField::kPitch, 2) +
+            " m apart, every other column pushed into the next), " + fixed(CubeField::kDuration, 1) + " s at " +
+            fixed(1.0 / any.settings.timestep, 0) + " Hz, " + std::to_string(any.settings.iterations) +
+            " iterations, " + name(any.settings.integrator);
+  t.columns = {{"cubes", "cubes"},         {"switch", "switch"},           {"ms_per_step", "ms/step"},
+               {"", "us/cube"},            {"spread", "spread"},           {"", "vs defaults"},
+               {"difference_m", "moved [mm]"}, {"same_state", "outcome"}, {"complete", ""}};
+  double base = 0.0;
+  for (const ScalePoint& p : points) {
+    const bool defaults = p.name == "defaults";
+    if (defaults) base = p.msPerStep;
+    t.rows.push_back({cell(p.cubes, std::to_string(p.cubes)), cell(p.name), cell(p.msPerStep, 3),
+                      cell(nullptr, fixed(1000.0 * p.msPerStep / p.cubes, 2)), percent(p.spread),
+                      cell(nullptr, defaults ? "" : signedPercent(p.msPerStep / base)),
+                      cell(p.difference, defaults ? "" : fixed(1000.0 * p.difference, 4)),
+                      flag(p.sameState, !p.complete ? "diverged" : defaults ? "" : p.sameState ? "bit-identical" : "differs"),
+                      flag(p.complete, "")});
+  }
+  t.notes.push_back("growth exponent k of time per step ~ cubes^k (least squares over the sizes):");
+  for (const auto& [switchName, k] : exponents(points)) t.notes.push_back("  " + padded(switchName, 26) + fixed(k, 2));
+  return t;
+}
+
+ResultTable hardTable(const std::vector<HardPoint>& points) {
+  ResultTable t;
+  t.title = "Hard cases (full physics, each at its own settings, one run)";
+  t.columns = {{"scene", "scene"},
+               {"timestep_s", ""},
+               {"", "rate [Hz]"},
+               {"iterations", "iterations"},
+               {"cost_ms_per_s", "cost [ms/s]"},
+               {"worst_drift_m", "drift [mm]"},
+               {"worst_penetration_m", "penetration [mm]"},
+               {"rest_speed_m_per_s", "rest [mm/s]"},
+               {"energy_gain_j", "energy gain"},
+               {"energy_scale_j", ""},
+               {"complete", ""},
+               {"failure", "outcome"}};
+  for (const HardPoint& p : points) {
+    const StabilityReport& r = p.report;
+    t.rows.push_back(
+        {cell(p.scene), cell(p.settings.timestep, 6), cell(nullptr, fixed(1.0 / p.settings.timestep, 0)),
+         cell(p.settings.iterations, std::to_string(p.settings.iterations)), cell(r.cost(), 2),
+         cell(r.worstDrift, fixed(1e3 * r.worstDrift, 3)), cell(r.worstPenetration, fixed(1e3 * r.worstPenetration, 3)),
+         cell(r.restSpeed, fixed(1e3 * r.restSpeed, 4)),
+         cell(r.energyGain, r.energyScale > 0 ? fixed(100.0 * r.energyGain / r.energyScale, 3) + "%" : "0"),
+         cell(r.energyScale, ""), flag(r.complete, ""), cell(r.failure, r.complete ? "" : "diverged: " + r.failure)});
+  }
+  return t;
+}
+
+std::string sweepPlotScript(const std::vector<BenchPoint>& points, const std::string& scene) {
+  // The curve a point belongs to: in bullet mode its integrator and
+  // iterations, otherwise its mode alone.
+  const auto family = [](const BenchPoint& p) {
+    if (p.mode != SimulationMode::Bullet) return name(p.mode);
+    return name(p.integrator) + ", " + std::to_string(p.iterations) + " iterations";
+  };
+  std::ostringstream g;
+  g << std::setprecision(9);
+  g << "set title " << gnuplotQuoted(scene + ": error against cost (Bullet, double)") << " noenhanced\n";
+  g << "set logscale xy\nset grid\nset key top right\n";
+  g << "set xlabel 'wall time per simulated second [ms]'\nset ylabel 'error [mm]'\n";
+  std::vector<std::string> families;
+  for (const BenchPoint& p : points) {
+    if (p.scene == scene && std::find(families.begin(), families.end(), family(p)) == families.end()) {
+      families.push_back(family(p));
+    }
+  }
+  std::vector<std::string> curves;
+  for (std::size_t f = 0; f < families.size(); ++f) {
+    const std::string block = "$family" + std::to_string(f);
+    g << block << " << EOD\n";
+    for (const BenchPoint& p : points) {
+      if (p.scene == scene && family(p) == families[f] && p.complete) {
+        g << p.costMs << " " << std::max(1e-6, 1000.0 * p.error) << " " << 1.0 / p.timestep << "\n";
+      }
+    }
+    g << "EOD\n";
+    curves.push_back(block + " using 1:2 with linespoints title " + gnuplotQuoted(families[f]));
+  }
+  g << "$front << EOD\n";
+  for (const BenchPoint& p : points) {
+    if (p.scene == scene && p.front) g << p.costMs << " " << std::max(1e-6, 1000.0 * p.error) << "\n";
+  }
+  g << "EOD\n";
+  curves.push_back("$front using 1:2 with points pt 6 ps 2.5 lc rgb 'black' title 'Pareto front'");
+  g << "plot ";
+  for (std::size_t i = 0; i < curves.size(); ++i) g << (i ? ", \\\n     " : "") << curves[i];
+  g << "\n";
+  return g.str();
+}
+
+}  // namespace tabletop
