@@ -16,7 +16,7 @@
 #include "app/BenchTables.h"
 #include "app/DataPaths.h"
 #include "app/GnuplotFile.h"
-#include "app/NumberOption.h"
+#include "app/OptionChecks.h"
 #include "app/InterruptGuard.h"
 #include "app/RunCommand.h"
 #include "io/AtomicFile.h"

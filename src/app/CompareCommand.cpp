@@ -10,13 +10,6 @@
 
 namespace tabletop {
 
-namespace {
-
-// Thrown from a step observer when Ctrl-C or SIGTERM arrived.
-struct Interrupted {};
-
-}  // namespace
-
 int compareScenario(const CompareOptions& options, std::ostream& out, std::ostream& err) {
   // The plot's name is checked before anything runs.
   if (options.plot) {
@@ -32,12 +25,12 @@ int compareScenario(const CompareOptions& options, std::ostream& out, std::ostre
   try {
     scenario = loadScenario(source, options.run);
     comparison = compareModes(scenario, scenario.settings, [&interrupt](const Simulation&) {
-      if (interrupt.requested()) throw Interrupted{};
+      interrupt.throwIfRequested();
     });
   } catch (const ScenarioError& e) {
     for (const std::string& line : e.lines()) err << line << "\n";
     return kExitBadInput;
-  } catch (const Interrupted&) {
+  } catch (const InterruptGuard::Interrupted&) {
     err << "tabletop compare: interrupted; nothing written\n";
     return kExitInterrupted;
   }

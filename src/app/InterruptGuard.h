@@ -24,6 +24,13 @@ class InterruptGuard {
   /// The signal that arrived, or 0.
   int signal() const;
 
+  /// Thrown by throwIfRequested(), to leave a run from inside its step
+  /// observer; the command catches it and exits with status 130.
+  struct Interrupted {};
+  void throwIfRequested() const {
+    if (requested()) throw Interrupted{};
+  }
+
  private:
   struct sigaction previousInt_ {};
   struct sigaction previousTerm_ {};

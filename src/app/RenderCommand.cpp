@@ -1,9 +1,5 @@
 #include "app/RenderCommand.h"
 
-#include <fcntl.h>
-#include <sys/file.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -18,13 +14,14 @@
 #include <CLI/CLI.hpp>
 
 #include "app/InterruptGuard.h"
-#include "app/NumberOption.h"
+#include "app/OptionChecks.h"
 #include "core/Text.h"
 #include "draw/Camera.h"
 #include "draw/SceneDrawing.h"
 #include "headless/OsMesaContext.h"
 #include "headless/VideoEncoder.h"
 #include "image/PngFile.h"
+#include "io/FolderLock.h"
 #include "render/GlRenderer.h"
 #include "scenario/ScenarioError.h"
 #include "sim/DivergenceGuard.h"
@@ -46,24 +43,6 @@ std::string stillName(double t) {
   name << "t_" << std::fixed << std::setprecision(3) << t << ".png";
   return name.str();
 }
-
-// An advisory lock (flock) on a folder, held while the object lives.
-class FolderLock {
- public:
-  explicit FolderLock(const std::string& dir) : fd_(::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC)) {
-    held_ = fd_ >= 0 && ::flock(fd_, LOCK_EX | LOCK_NB) == 0;
-  }
-  ~FolderLock() {
-    if (fd_ >= 0) ::close(fd_);
-  }
-  FolderLock(const FolderLock&) = delete;
-  FolderLock& operator=(const FolderLock&) = delete;
-  bool held() const { return held_; }
-
- private:
-  int fd_;
-  bool held_ = false;
-};
 
 // Removes the temporaries of frames and stills that a killed render (a
 // kill cannot be caught) left in `dir`; returns how many.

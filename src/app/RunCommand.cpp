@@ -9,7 +9,7 @@
 
 #include "app/DataPaths.h"
 #include "app/InterruptGuard.h"
-#include "app/NumberOption.h"
+#include "app/OptionChecks.h"
 #include "io/AtomicFile.h"
 #include "scenario/ScenarioError.h"
 #include "scenario/ScenarioLoader.h"
@@ -21,10 +21,6 @@
 
 namespace tabletop {
 namespace {
-
-// Thrown from a step observer when Ctrl-C or SIGTERM arrived: it unwinds
-// the run, and every AtomicFile on the way removes its temporary.
-struct Interrupted {};
 
 // A --duration that ends before some of the script's actions: they will
 // not run, which the user may not have meant. One located line each.
@@ -126,7 +122,7 @@ int runScenarios(const RunOptions& options, std::ostream& out, std::ostream& err
         for (const std::string& line : warnings) err << line << "\n";
         std::unique_ptr<Simulation> simulation = buildSimulation(scenario, settings, options.mode);
         StepObserver observer = [&interrupt](const Simulation&) {
-          if (interrupt.requested()) throw Interrupted{};
+          interrupt.throwIfRequested();
         };
         if (options.traceFile) {
           std::vector<std::string> names;
@@ -138,7 +134,7 @@ int runScenarios(const RunOptions& options, std::ostream& out, std::ostream& err
           }
           trace->record(*simulation);
           observer = [&interrupt, &trace](const Simulation& s) {
-            if (interrupt.requested()) throw Interrupted{};
+            interrupt.throwIfRequested();
             trace->record(s);
           };
         }
@@ -148,7 +144,7 @@ int runScenarios(const RunOptions& options, std::ostream& out, std::ostream& err
         failed = true;
       }
     }
-  } catch (const Interrupted&) {
+  } catch (const InterruptGuard::Interrupted&) {
     err << "tabletop run: interrupted; nothing written\n";
     return kExitInterrupted;
   }

@@ -8,7 +8,7 @@
 #include "app/BenchCommand.h"
 #include "app/CompareCommand.h"
 #include "app/DataPaths.h"
-#include "app/NumberOption.h"
+#include "app/OptionChecks.h"
 #include "app/RenderCommand.h"
 #include "app/RunCommand.h"
 #include "app/ViewCommand.h"
