@@ -12,7 +12,7 @@ namespace tabletop {
 /// is placed: seated a hair into its support, so the first collision pass
 /// sees the contact. At exact touch rounding can leave a gap of an ulp,
 /// which Bullet's box-box test reports as no contact; the body then falls
-/// for one step (0.17 mm at 240 Hz) before the solver catches it. The seat
+/// for one step before the solver catches it (docs/bullet-corrections.md). The seat
 /// is 1 nm, or 8 ulps of the build's scalar at `y` if that is larger
 /// (float: about 0.5 micrometre at 1 m).
 inline double seated(double y) {

@@ -36,11 +36,10 @@ double rollingDistance(double v0, double mu, double rf, double radius, double gr
 /// constant accelerations once velocities are read as belonging to
 /// mid-steps. A push at time t then sets the velocity of t + dt/2, and a
 /// sliding body's launch speed is raised by mu g dt / 2; without it a step
-/// falls short by v0 dt / 2 (5% of a 0.2 m step at mu = 0.4 and 60 Hz). A
-/// sphere takes no offset there: measured, the plain closed form lands
-/// within +0.95% at 60 Hz and +0.22% at 240 Hz, while either half-step
-/// offset overshoots (+12%, +2.9% at 60 Hz); what remains is the slip
-/// phase's first-order error.
+/// falls short by v0 dt / 2. A sphere takes no offset there: the plain
+/// closed form lands closer than either half-step offset, and what remains
+/// is the slip phase's first-order error (figures in
+/// docs/bullet-corrections.md).
 ///
 /// Throws std::invalid_argument when no finite step can be reached
 /// (no friction; a sphere without rolling friction, or with rf >= mu r).
