@@ -5,6 +5,7 @@
 #include <cmath>
 #include <vector>
 
+#include "physics/World.h"
 #include "sim/SceneBuilder.h"
 
 namespace tabletop {

@@ -2,12 +2,18 @@
 
 #include <memory>
 
+#include "core/Simulation.h"
 #include "core/SimulationMode.h"
-#include "physics/World.h"
 #include "rules/RuleBody.h"
 #include "scenario/Scenario.h"
 
 namespace tabletop {
+
+// Bullet's scene, declared only: a caller of buildWorld() or makeShape()
+// includes physics/World.h itself, so building a scene in any mode does
+// not pull Bullet's headers in.
+class Shape;
+class World;
 
 /// Builds the Bullet scene (mode "bullet") a scenario describes: the table,
 /// the ground and each entity, resting on what its "on" names. Throws a

@@ -14,6 +14,7 @@
 #include "scenario/ScenarioLoader.h"
 #include "scenes/CubeField.h"
 #include "sim/DivergenceGuard.h"
+#include "physics/World.h"
 #include "sim/SceneBuilder.h"
 #include "sim/ScriptRunner.h"
 

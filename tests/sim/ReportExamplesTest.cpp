@@ -10,6 +10,7 @@
 #include "core/StateHash.h"
 #include "scenario/ScenarioError.h"
 #include "scenario/ScenarioLoader.h"
+#include "physics/World.h"
 #include "sim/SceneBuilder.h"
 #include "sim/ScriptRunner.h"
 
