@@ -52,6 +52,38 @@ std::optional<PixelPoint> Camera::project(const Vec3& p, int width, int height) 
   return PixelPoint{0.5 * (x + 1.0) * width, 0.5 * (1.0 - y) * height, -eyeSpace[2]};
 }
 
+void Camera::fit(const std::vector<Bound>& bounds, double aspect, double margin) {
+  if (bounds.empty()) return;
+  Vec3 low = bounds[0].centre, high = bounds[0].centre;
+  for (const Bound& b : bounds) {
+    for (const Vec3& p : {b.centre - Vec3{b.radius, b.radius, b.radius}, b.centre + Vec3{b.radius, b.radius, b.radius}}) {
+      low = {std::min(low.x, p.x), std::min(low.y, p.y), std::min(low.z, p.z)};
+      high = {std::max(high.x, p.x), std::max(high.y, p.y), std::max(high.z, p.z)};
+    }
+  }
+  target = (low + high) * 0.5;
+  // In the eye's axes, a ball at height y, across x and depth z from the
+  // target stands within the view from distance D when
+  // |y| + r / cos(h) <= (D + z) tan(h), h the half field (and the same
+  // across, with the horizontal half field).
+  distance = 1.0;
+  const Mat4 v = view();
+  const Vec3 right{v.at(0, 0), v.at(0, 1), v.at(0, 2)}, up{v.at(1, 0), v.at(1, 1), v.at(1, 2)},
+      back{v.at(2, 0), v.at(2, 1), v.at(2, 2)};
+  const double halfY = convertAngle(0.5 * fovyDegrees) * (1.0 - margin);
+  const double halfX = std::atan(aspect * std::tan(convertAngle(0.5 * fovyDegrees))) * (1.0 - margin);
+  double needed = nearPlane;
+  for (const Bound& b : bounds) {
+    const Vec3 d = b.centre - target;
+    const double z = -d.dot(back);  // towards the target from the eye is positive
+    for (const auto& [across, half] : {std::pair{std::abs(d.dot(up)), halfY}, std::pair{std::abs(d.dot(right)), halfX}}) {
+      needed = std::max(needed, (across + b.radius / std::cos(half)) / std::tan(half) - z);
+    }
+    needed = std::max(needed, b.radius + nearPlane - z);
+  }
+  distance = needed;
+}
+
 void Camera::zoom(double factor) { distance = std::clamp(distance * factor, 0.2, 40.0); }
 
 void Camera::orbit(double yaw, double pitch) {

@@ -44,6 +44,16 @@ struct Camera {
   /// Moves the target across the view by a fraction of the view's height.
   void pan(double right, double up);
 
+  /// A ball of the scene to keep in view: centre and radius, metres.
+  struct Bound {
+    Vec3 centre;
+    double radius = 0.0;
+  };
+  /// Keeps the direction and field of view, and sets the target and the
+  /// distance so that every bound is wholly in a view of `aspect` (width
+  /// over height), with `margin` (a fraction of the view) to spare.
+  void fit(const std::vector<Bound>& bounds, double aspect, double margin = 0.05);
+
   /// The names `named` accepts, in the order --help lists them.
   static std::vector<std::string> names();
   /// A view framing `table`: "front" (the report's view), "corner",

@@ -118,4 +118,19 @@ DrawList makeDrawList(const Scenario& scenario, const std::vector<EntityState>& 
   return list;
 }
 
+std::vector<Camera::Bound> sceneBounds(const Scenario& scenario, const std::vector<EntityState>& states) {
+  const TableSpec& t = scenario.table;
+  std::vector<Camera::Bound> bounds;
+  // The table as its eight corners, from the floor to its top.
+  for (const double x : {t.centreX - 0.5 * t.width, t.centreX + 0.5 * t.width}) {
+    for (const double z : {t.centreZ - 0.5 * t.depth, t.centreZ + 0.5 * t.depth}) {
+      for (const double y : {0.0, t.height}) bounds.push_back({{x, y, z}, 0.0});
+    }
+  }
+  for (std::size_t i = 0; i < states.size() && i < scenario.entities.size(); ++i) {
+    bounds.push_back({states[i].position, scenario.entities[i].geometry.boundingRadius()});
+  }
+  return bounds;
+}
+
 }  // namespace tabletop

@@ -5,6 +5,7 @@
 
 #include "core/Arrow.h"
 #include "core/EntityState.h"
+#include "draw/Camera.h"
 #include "draw/DrawList.h"
 #include "scenario/Scenario.h"
 
@@ -22,6 +23,10 @@ struct DrawOptions {
 DrawList makeDrawList(const Scenario& scenario, const std::vector<EntityState>& states,
                       const std::optional<Arrow>& arrow, const std::vector<Vec3>& contacts,
                       const DrawOptions& options = {});
+
+/// What a camera fitted to the scene keeps in view: the table (its top and
+/// legs) and each entity where `states` puts it, by its bounding radius.
+std::vector<Camera::Bound> sceneBounds(const Scenario& scenario, const std::vector<EntityState>& states);
 
 /// The arrow as drawn for an entity of `spec` in `state`: its head touches
 /// the pushed face (report 3.3.6), its length is 1.2 times the entity's

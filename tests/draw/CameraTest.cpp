@@ -33,6 +33,44 @@ TEST(Camera, ProjectsLikeAPinhole) {
   EXPECT_FALSE(c.project(c.eye() + Vec3{0, 0, 1.0}, 640, 480)) << "behind the eye";
 }
 
+// A fitted camera keeps every ball wholly in the image (its centre and the
+// points a radius to either side, across and up) for every preset
+// direction, aspect and spread of balls, and fits tight: some ball reaches
+// the margin's edge within a pixel.
+TEST(Camera, FitKeepsEveryBallInViewAndFitsTight) {
+  const TableSpec table;
+  const std::vector<std::vector<Camera::Bound>> scenes = {
+      {{{0, 0.75, 0}, 0.05}},
+      {{{-0.6, 0, -0.4}, 0}, {{0.6, 0.75, 0.4}, 0}, {{2.45, 0.05, -0.47}, 0.05}},
+      {{{0, 0.4, 0}, 2.5}, {{-3, 0.1, 1}, 0.1}},
+      {{{0.1, 0.2, 0.3}, 0.01}, {{0.1, 3.5, 0.3}, 0.05}},
+  };
+  for (const std::string& name : Camera::names()) {
+    for (const auto& [w, h] : {std::pair{960, 720}, std::pair{1280, 480}, std::pair{480, 960}}) {
+      for (const auto& bounds : scenes) {
+        Camera c = *Camera::named(name, table);
+        c.fit(bounds, double(w) / h, 0.05);
+        double closest = 1e9;  // px from a ball's edge to the margin's edge
+        for (const Camera::Bound& b : bounds) {
+          const Mat4 v = c.view();
+          const Vec3 right{v.at(0, 0), v.at(0, 1), v.at(0, 2)}, up{v.at(1, 0), v.at(1, 1), v.at(1, 2)};
+          for (const Vec3& p : {b.centre, b.centre + right * b.radius, b.centre - right * b.radius,
+                                b.centre + up * b.radius, b.centre - up * b.radius}) {
+            const auto px = c.project(p, w, h);
+            ASSERT_TRUE(px) << name;
+            EXPECT_GE(px->column, 0.0) << name;
+            EXPECT_LE(px->column, w) << name;
+            EXPECT_GE(px->row, 0.0) << name;
+            EXPECT_LE(px->row, h) << name;
+            closest = std::min({closest, px->column, w - px->column, px->row, h - px->row});
+          }
+        }
+        if (bounds.size() > 1) EXPECT_LT(closest, 0.05 * std::max(w, h)) << name << " " << w << "x" << h;
+      }
+    }
+  }
+}
+
 TEST(Camera, OrbitKeepsTheDistanceAndPitchStaysBelowTheVertical) {
   Camera c;
   c.orbit(30.0, 100.0);

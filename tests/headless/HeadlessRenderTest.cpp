@@ -59,6 +59,12 @@ class Scene {
   const Scenario& scenario() const { return scenario_; }
   std::vector<EntityState> states() const { return simulation_->snapshot(); }
   Camera front() const { return *Camera::named("front", scenario_.table); }
+  // The report's direction, fitted to the table and every entity now.
+  Camera fitted() const {
+    Camera c = front();
+    c.fit(sceneBounds(scenario_, states()), double(kWidth) / kHeight);
+    return c;
+  }
 
  private:
   Scenario scenario_;
@@ -78,7 +84,7 @@ double pixels(double metres, double depth, const Camera& camera, int height = kH
 // to be the entity (a tenth of its silhouette's bounding square) and
 // centred on it within half its size.
 void expectEntitiesWhereSimulated(Scene& scene, const std::string& when) {
-  const Camera camera = scene.front();
+  const Camera camera = scene.fitted();
   const Image image = scene.render(camera);
   std::set<std::uint32_t> colours;
   for (std::size_t i = 0; i < image.rgb.size(); i += 3) {
@@ -121,7 +127,7 @@ TEST_P(ReportExampleFrames, ShowEachEntityWhereItsSimulatedPositionProjects) {
 TEST_P(ReportExampleFrames, ShowDroppedEntitiesBelowTheTableTopLine) {
   Scene scene(GetParam());
   scene.runToEnd();
-  const Camera camera = scene.front();
+  const Camera camera = scene.fitted();
   const Image image = scene.render(camera);
   const TableSpec& t = scene.scenario().table;
   const auto a = camera.project({t.centreX - 0.5 * t.width, t.height, t.centreZ + 0.5 * t.depth}, kWidth, kHeight);
