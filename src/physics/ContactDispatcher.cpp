@@ -37,6 +37,14 @@ void ContactDispatcher::nearCallback(btBroadphasePair& pair, btCollisionDispatch
   }
   if (pair.m_algorithm == nullptr) return;
   ContactResult result(&wrap0, &wrap1);
+  // Two spheres: Bullet's algorithm reports them only once they overlap,
+  // unless asked for points this far apart. Every other pair is found up
+  // to the breaking threshold ahead of touching, and an impact between
+  // spheres is placed at its own time like any other (DynamicsWorld).
+  if (object0->getCollisionShape()->getShapeType() == SPHERE_SHAPE_PROXYTYPE &&
+      object1->getCollisionShape()->getShapeType() == SPHERE_SHAPE_PROXYTYPE) {
+    result.m_closestPointDistanceThreshold = gContactBreakingThreshold;
+  }
   if (info.m_dispatchFunc == btDispatcherInfo::DISPATCH_DISCRETE) {
     pair.m_algorithm->processCollision(&wrap0, &wrap1, info, &result);
   } else {

@@ -4,6 +4,7 @@
 
 #include "core/Material.h"
 #include "physics/ContactMaterial.h"
+#include "physics/Impacts.h"
 
 namespace tabletop {
 namespace {
@@ -27,10 +28,6 @@ bool isClippedBoxPair(const btPersistentManifold& manifold) {
   return (isBox(manifold.getBody0()) || isBox(manifold.getBody1())) && clipped(manifold.getBody0()) &&
          clipped(manifold.getBody1());
 }
-
-// How many times the settings' solver iterations a step with an impact
-// gets (DynamicsWorld, 4).
-constexpr int kImpactSweeps = 5;
 
 // How far apart along the contact plane a point's two sides may slide
 // before it is stale, metres: a point found in this step has none (to
@@ -153,25 +150,38 @@ void DynamicsWorld::applyRollingResistance() {
   }
 }
 
-void DynamicsWorld::step(double dt) {
-  if (lastStep_ > 0 && dt != lastStep_) {
-    const double ratio = dt / lastStep_;
-    for (int m = 0; m < getDispatcher()->getNumManifolds(); ++m) {
-      btPersistentManifold* manifold = getDispatcher()->getManifoldByIndexInternal(m);
-      for (int p = 0; p < manifold->getNumContacts(); ++p) {
-        btManifoldPoint& point = manifold->getContactPoint(p);
-        point.m_appliedImpulse *= ratio;
-        point.m_appliedImpulseLateral1 *= ratio;
-        point.m_appliedImpulseLateral2 *= ratio;
-      }
+void DynamicsWorld::scaleCarriedImpulses(double ratio) {
+  if (ratio == 1.0) return;
+  for (int m = 0; m < getDispatcher()->getNumManifolds(); ++m) {
+    btPersistentManifold* manifold = getDispatcher()->getManifoldByIndexInternal(m);
+    for (int p = 0; p < manifold->getNumContacts(); ++p) {
+      btManifoldPoint& point = manifold->getContactPoint(p);
+      point.m_appliedImpulse *= ratio;
+      point.m_appliedImpulseLateral1 *= ratio;
+      point.m_appliedImpulseLateral2 *= ratio;
     }
   }
-  lastStep_ = dt;
-  // maxSubSteps = 0: exactly one step of the given length.
-  stepSimulation(dt, 0);
 }
 
-void DynamicsWorld::integrateTransforms(btScalar timeStep) {
+// The step is taken in parts, each ending at the next impact inside it
+// (solveConstraints shortens the part), at most kMaxParts; the last part
+// takes whatever is left whole.
+void DynamicsWorld::step(double dt) {
+  stepLength_ = dt;
+  double left = dt;
+  for (int part = 0; left > 0; ++part) {
+    if (lastStep_ > 0) scaleCarriedImpulses(left / lastStep_);
+    partLength_ = left;
+    mayCut_ = part + 1 < kMaxParts && smoothAcceleration_ > 0;
+    // maxSubSteps = 0: exactly one step of the given length.
+    stepSimulation(left, 0);
+    lastStep_ = partLength_;
+    left = partLength_ < left ? left - partLength_ : 0.0;
+  }
+}
+
+void DynamicsWorld::integrateTransforms(btScalar) {
+  const btScalar timeStep = partLength_;
   btDiscreteDynamicsWorld::integrateTransforms(timeStep);
   if (!secondOrder_ || !(smoothAcceleration_ > 0)) return;
   const btScalar limit = smoothAcceleration_ * timeStep;
@@ -180,6 +190,7 @@ void DynamicsWorld::integrateTransforms(btScalar timeStep) {
     if (!body->isActive() || body->isStaticOrKinematicObject()) continue;
     const btVector3 change = body->getLinearVelocity() - startVelocities_[static_cast<std::size_t>(i)];
     if (change.length2() > limit * limit) continue;  // an impact: keep Bullet's update
+    if (std::find(stopped_.begin(), stopped_.end(), body) != stopped_.end()) continue;  // likewise
     btTransform pose = body->getWorldTransform();
     pose.setOrigin(pose.getOrigin() - change * (timeStep / 2));
     body->proceedToTransform(pose);
@@ -197,10 +208,64 @@ void DynamicsWorld::solveConstraints(btContactSolverInfo& solverInfo) {
       dropDriftedPoints(*manifold);
     }
   }
+  resolveTouchingImpacts(solverInfo);
+  const ImpactScan scan(*dispatcher, bounced_);
+  if (mayCut_) {
+    const double cut = std::min(scan.earliestImpact(partLength_, kBounceSpeed),
+                                scan.earliestSeparatedImpact(*getBroadphase()->getOverlappingPairCache(),
+                                                             partLength_, kBounceSpeed));
+    if (cut < partLength_) {
+      scaleCarriedImpulses(cut / partLength_);
+      partLength_ = cut;
+    }
+  }
+  // A part shorter than the step (cut at an impact, or what was left after
+  // one) carries on what it was given, not what it solved: its impulses
+  // also hold velocity corrections that do not grow with the part, and the
+  // next, longer part would scale them up with its length (a remnant of
+  // 1 ns once gave the next step a start of 2,500 N s).
+  std::vector<std::pair<btManifoldPoint*, btVector3>> carried;
+  if (partLength_ < stepLength_) {
+    for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
+      btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
+      for (int p = 0; p < manifold->getNumContacts(); ++p) {
+        btManifoldPoint& point = manifold->getContactPoint(p);
+        carried.emplace_back(&point, btVector3(point.m_appliedImpulse, point.m_appliedImpulseLateral1,
+                                               point.m_appliedImpulseLateral2));
+      }
+    }
+  }
+  solverInfo.m_timeStep = partLength_;
   const int iterations = solverInfo.m_numIterations;
   const bool impacts = markImpacts(solverInfo.m_timeStep);
   if (impacts) solverInfo.m_numIterations = kImpactSweeps * iterations;
+  // The points closing at the part's start that meet inside it even at
+  // that speed: a body one of them stops changes its velocity at once, not
+  // smoothly. (A part cut at an impact reaches its point only at its end.)
+  std::vector<std::pair<const btPersistentManifold*, const btManifoldPoint*>> closing;
+  for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
+    const btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
+    for (int p = 0; p < manifold->getNumContacts(); ++p) {
+      const btManifoldPoint& point = manifold->getContactPoint(p);
+      const double speed = closingSpeed(*manifold, point);
+      if (speed > stopSpeed() && point.getDistance() <= speed * partLength_) closing.emplace_back(manifold, &point);
+    }
+  }
+  if (secondOrder_) scan.holdMeanVelocity(partLength_, heldGaps_);
   btDiscreteDynamicsWorld::solveConstraints(solverInfo);
+  stopped_.clear();
+  for (const auto& [manifold, point] : closing) {
+    if (!(point->getAppliedImpulse() > 0)) continue;
+    for (const btCollisionObject* o : {manifold->getBody0(), manifold->getBody1()}) stopped_.push_back(o);
+  }
+  for (const auto& [point, impulses] : carried) {
+    point->m_appliedImpulse = impulses.x();
+    point->m_appliedImpulseLateral1 = impulses.y();
+    point->m_appliedImpulseLateral2 = impulses.z();
+  }
+  for (const auto& [point, distance] : heldGaps_) point->setDistance(distance);
+  heldGaps_.clear();
+  bounced_.clear();
   solverInfo.m_numIterations = iterations;
   if (impacts) forgetImpacts();
 }
@@ -210,12 +275,6 @@ namespace {
 // A bit of btManifoldPoint::m_contactPointFlags that Bullet's own flags
 // (1 to 16) leave free: the point is an impact in this step.
 constexpr int kImpactFlag = 1 << 20;
-
-btVector3 velocityAt(const btCollisionObject* object, const btVector3& point) {
-  const btRigidBody* body = btRigidBody::upcast(object);
-  if (!body) return btVector3(0, 0, 0);
-  return body->getVelocityInLocalPoint(point - body->getCenterOfMassPosition());
-}
 
 }  // namespace
 
@@ -230,11 +289,7 @@ bool DynamicsWorld::markImpacts(double timeStep) {
     btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
     for (int p = 0; p < manifold->getNumContacts(); ++p) {
       btManifoldPoint& point = manifold->getContactPoint(p);
-      // The normal on B points from B towards A: A closes on B when its
-      // velocity relative to B points against it.
-      const btVector3 relative = velocityAt(manifold->getBody0(), point.getPositionWorldOnA()) -
-                                 velocityAt(manifold->getBody1(), point.getPositionWorldOnB());
-      if (-relative.dot(point.m_normalWorldOnB) > limit) {
+      if (closingSpeed(*manifold, point) > limit) {
         point.m_contactPointFlags |= kImpactFlag;
         any = true;
       }

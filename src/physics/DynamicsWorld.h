@@ -17,11 +17,17 @@ namespace tabletop {
 ///     sqrt(2) times too hard);
 ///  3. optionally, positions follow the trapezoid rule where the velocity
 ///     changed smoothly (exact for a constant acceleration), Bullet's update
-///     where an impact changed it;
-///  4. impacts are not warm-started, and their step gets five times the
+///     where an impact or a contact stopping a body changed it;
+///  4. impacts happen at their own time: a step is cut where the next one
+///     comes (Impacts.h), at most kMaxParts parts, and a touching point
+///     closing at an impact's speed bounces at the start of a part, in a
+///     solve of its own (restitution on touching points only, no gravity,
+///     no warm start, no more energy than before);
+///  5. impacts are not warm-started, and their step gets five times the
 ///     iterations;
-///  5. impulses carried into a step of another length (a substep) are
-///     scaled by the ratio of the lengths.
+///  6. impulses carried into a part of another length are scaled by the
+///     ratio of the lengths; a part shorter than the step carries on what
+///     it was given.
 class DynamicsWorld : public btDiscreteDynamicsWorld {
  public:
   using btDiscreteDynamicsWorld::btDiscreteDynamicsWorld;
@@ -35,8 +41,9 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   /// Turns the second-order position update on (off by default).
   void setSecondOrderPositions(bool on) { secondOrder_ = on; }
 
-  /// One step of `dt` seconds, no interpolation; carried impulses are
-  /// scaled when `dt` differs from the step before.
+  /// One step of `dt` seconds, no interpolation, in parts cut at impacts;
+  /// carried impulses are scaled when a part's length differs from the
+  /// part before.
   void step(double dt);
 
   void solveConstraints(btContactSolverInfo& solverInfo) override;
@@ -52,10 +59,28 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
 
   bool markImpacts(double timeStep);
   void forgetImpacts();
+  void resolveTouchingImpacts(btContactSolverInfo& solverInfo);
+  void scaleCarriedImpulses(double ratio);
+  // The closing speed, m/s, above which a point that stops a body counts
+  // as stopping it at once: a tenth of what smooth forces give in a step,
+  // above a resting contact's rounding.
+  double stopSpeed() const { return 0.1 * smoothAcceleration_ * stepLength_; }
+
+  // How many times the settings' iterations an impact gets.
+  static constexpr int kImpactSweeps = 5;
+  // At most this many parts to a step (the cap on impacts placed at their
+  // own time in one step; past it the rest of the step is taken whole).
+  static constexpr int kMaxParts = 8;
 
   double smoothAcceleration_ = 0.0;
   bool secondOrder_ = false;
-  double lastStep_ = 0.0;  // the length of the step before, s (0: none yet)
+  double lastStep_ = 0.0;    // the length of the part before, s (0: none yet)
+  double stepLength_ = 0.0;  // the step being taken, s
+  double partLength_ = 0.0;  // the part of it being taken, s
+  bool mayCut_ = false;      // the part may end at an impact
+  std::vector<std::pair<btManifoldPoint*, btScalar>> heldGaps_;
+  std::vector<btManifoldPoint*> bounced_;  // points bounced at the start of the part
+  std::vector<const btCollisionObject*> stopped_;  // bodies a closing point stopped in the last solve  // points whose gap the part closes, and their gaps
   std::vector<btVector3> startVelocities_;  // per non-static body, at the step's start
 };
 

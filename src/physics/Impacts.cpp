@@ -1,0 +1,194 @@
+#include "physics/Impacts.h"
+
+#include <BulletCollision/CollisionShapes/btCompoundShape.h>
+#include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
+#include <BulletCollision/NarrowPhaseCollision/btGjkPairDetector.h>
+#include <BulletCollision/NarrowPhaseCollision/btPointCollector.h>
+#include <BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/Material.h"
+#include "physics/ContactMaterial.h"
+
+namespace tabletop {
+namespace {
+
+btVector3 velocityAt(const btCollisionObject* object, const btVector3& point) {
+  const btRigidBody* body = btRigidBody::upcast(object);
+  if (!body) return btVector3(0, 0, 0);
+  return body->getVelocityInLocalPoint(point - body->getCenterOfMassPosition());
+}
+
+
+}  // namespace
+
+// The normal on B points from B towards A: A closes on B when its velocity
+// relative to B points against it.
+double closingSpeed(const btPersistentManifold& manifold, const btManifoldPoint& point) {
+  const btVector3 relative = velocityAt(manifold.getBody0(), point.getPositionWorldOnA()) -
+                             velocityAt(manifold.getBody1(), point.getPositionWorldOnB());
+  return -relative.dot(point.m_normalWorldOnB);
+}
+
+
+double timeToClose(double gap, double speed, double accel) {
+  constexpr double kNever = std::numeric_limits<double>::infinity();
+  if (gap <= 0) return 0.0;
+  if (accel == 0) return speed > 0 ? gap / speed : kNever;
+  // gap = speed t + accel t^2 / 2, its first positive root, in the form
+  // that does not cancel when accel t is small against speed.
+  const double discriminant = speed * speed + 2.0 * accel * gap;
+  if (discriminant < 0) return kNever;
+  const double denominator = speed + std::sqrt(discriminant);
+  return denominator > 0 ? 2.0 * gap / denominator : kNever;
+}
+
+double restitutionOf(const btPersistentManifold& manifold) {
+  const auto* a = static_cast<const Material*>(manifold.getBody0()->getUserPointer());
+  const auto* b = static_cast<const Material*>(manifold.getBody1()->getUserPointer());
+  return a && b ? combine(*a, *b).restitution : 0.0;
+}
+
+ImpactScan::ImpactScan(btDispatcher& dispatcher, const std::vector<btManifoldPoint*>& bounced)
+    : dispatcher_(dispatcher), bounced_(bounced) {
+  for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
+    const btPersistentManifold& manifold = *dispatcher.getManifoldByIndexInternal(m);
+    for (int p = 0; p < manifold.getNumContacts(); ++p) {
+      const btManifoldPoint& point = manifold.getContactPoint(p);
+      if (point.getDistance() > kTouching || std::find(bounced.begin(), bounced.end(), &point) != bounced.end()) continue;
+      held_.push_back(manifold.getBody0());
+      held_.push_back(manifold.getBody1());
+    }
+  }
+}
+
+bool ImpactScan::held(const btCollisionObject* object) const {
+  return std::find(held_.begin(), held_.end(), object) != held_.end();
+}
+
+double ImpactScan::accelerationTowards(const btCollisionObject& a, const btCollisionObject& b,
+                                       const btVector3& normalOnB) const {
+  const auto accelerationOf = [&](const btCollisionObject& o) {
+    const btRigidBody* body = btRigidBody::upcast(&o);
+    if (!body || body->getInvMass() == 0 || held(&o)) return btVector3(0, 0, 0);
+    return body->getTotalForce() * body->getInvMass();
+  };
+  return -(accelerationOf(a) - accelerationOf(b)).dot(normalOnB);
+}
+
+double ImpactScan::closingAcceleration(const btPersistentManifold& manifold, const btManifoldPoint& point) const {
+  return accelerationTowards(*manifold.getBody0(), *manifold.getBody1(), point.m_normalWorldOnB);
+}
+
+double ImpactScan::earliestImpact(double horizon, double impactSpeed) const {
+  double earliest = horizon;
+  for (int m = 0; m < dispatcher_.getNumManifolds(); ++m) {
+    const btPersistentManifold& manifold = *dispatcher_.getManifoldByIndexInternal(m);
+    for (int p = 0; p < manifold.getNumContacts(); ++p) {
+      const btManifoldPoint& point = manifold.getContactPoint(p);
+      if (point.getDistance() <= kTouching) continue;
+      const double speed = closingSpeed(manifold, point), accel = closingAcceleration(manifold, point);
+      const double t = timeToClose(point.getDistance(), speed, accel);
+      if (t < earliest && speed + accel * t > impactSpeed) earliest = t;
+    }
+  }
+  return earliest;
+}
+
+namespace {
+
+// The convex pieces of a body's shape in the world: itself, or a
+// compound's children (the table's top and legs).
+std::vector<std::pair<const btConvexShape*, btTransform>> convexPieces(const btCollisionObject& object) {
+  std::vector<std::pair<const btConvexShape*, btTransform>> pieces;
+  const btCollisionShape* shape = object.getCollisionShape();
+  if (shape->isConvex()) {
+    pieces.emplace_back(static_cast<const btConvexShape*>(shape), object.getWorldTransform());
+  } else if (shape->isCompound()) {
+    const auto* compound = static_cast<const btCompoundShape*>(shape);
+    for (int c = 0; c < compound->getNumChildShapes(); ++c) {
+      if (!compound->getChildShape(c)->isConvex()) continue;
+      pieces.emplace_back(static_cast<const btConvexShape*>(compound->getChildShape(c)),
+                          object.getWorldTransform() * compound->getChildTransform(c));
+    }
+  }
+  return pieces;
+}
+
+// The fastest any point of `object` within `reach` of its centre moves, m/s.
+double fastestPoint(const btCollisionObject& object) {
+  const btRigidBody* body = btRigidBody::upcast(&object);
+  if (!body || body->isStaticOrKinematicObject()) return 0.0;
+  btVector3 low, high;
+  object.getCollisionShape()->getAabb(btTransform::getIdentity(), low, high);
+  return body->getLinearVelocity().length() + body->getAngularVelocity().length() * 0.5 * (high - low).length();
+}
+
+}  // namespace
+
+double ImpactScan::earliestSeparatedImpact(btOverlappingPairCache& pairs, double horizon, double impactSpeed) const {
+  double earliest = horizon;
+  btManifoldArray manifolds;
+  btBroadphasePairArray& array = pairs.getOverlappingPairArray();
+  for (int i = 0; i < array.size(); ++i) {
+    const btBroadphasePair& pair = array[i];
+    const auto& a = *static_cast<const btCollisionObject*>(pair.m_pProxy0->m_clientObject);
+    const auto& b = *static_cast<const btCollisionObject*>(pair.m_pProxy1->m_clientObject);
+    if (fastestPoint(a) + fastestPoint(b) <= impactSpeed) continue;
+    manifolds.resize(0);
+    if (pair.m_algorithm) pair.m_algorithm->getAllContactManifolds(manifolds);
+    bool found = false;
+    for (int m = 0; m < manifolds.size(); ++m) found |= manifolds[m]->getNumContacts() > 0;
+    if (found) continue;  // earliestImpact has its points
+    for (const auto& [shapeA, placeA] : convexPieces(a)) {
+      for (const auto& [shapeB, placeB] : convexPieces(b)) {
+        btVoronoiSimplexSolver simplex;
+        btGjkEpaPenetrationDepthSolver depth;
+        btGjkPairDetector gjk(shapeA, shapeB, &simplex, &depth);
+        btDiscreteCollisionDetectorInterface::ClosestPointInput input;
+        input.m_transformA = placeA;
+        input.m_transformB = placeB;
+        btPointCollector closest;
+        gjk.getClosestPoints(input, closest, nullptr);
+        if (!closest.m_hasResult || closest.m_distance <= kTouching) continue;
+        // A point of manifold form: the normal on B, from B towards A.
+        const btVector3 onB = closest.m_pointInWorld;
+        const btVector3 onA = onB + closest.m_normalOnBInWorld * closest.m_distance;
+        const auto velocityAt = [](const btCollisionObject& o, const btVector3& p) {
+          const btRigidBody* body = btRigidBody::upcast(&o);
+          return body ? body->getVelocityInLocalPoint(p - body->getCenterOfMassPosition()) : btVector3(0, 0, 0);
+        };
+        const btVector3& n = closest.m_normalOnBInWorld;
+        const double speed = -(velocityAt(a, onA) - velocityAt(b, onB)).dot(n);
+        const double accel = accelerationTowards(a, b, n);
+        // To half the touching distance past touch: the separating-axis
+        // test reports faces that only touch as apart.
+        const double t = timeToClose(closest.m_distance + 0.5 * kTouching, speed, accel);
+        if (t < earliest && speed + accel * t > impactSpeed) earliest = t;
+      }
+    }
+  }
+  return earliest;
+}
+
+void ImpactScan::holdMeanVelocity(double length, std::vector<std::pair<btManifoldPoint*, btScalar>>& saved) const {
+  const auto free = [&](const btCollisionObject* o) { return !o->isStaticOrKinematicObject() && !held(o); };
+  for (int m = 0; m < dispatcher_.getNumManifolds(); ++m) {
+    btPersistentManifold& manifold = *dispatcher_.getManifoldByIndexInternal(m);
+    for (int p = 0; p < manifold.getNumContacts(); ++p) {
+      btManifoldPoint& point = manifold.getContactPoint(p);
+      const bool bounced = std::find(bounced_.begin(), bounced_.end(), &point) != bounced_.end();
+      const double gap = point.getDistance();
+      if (!bounced && (gap <= kTouching || !(free(manifold.getBody0()) || free(manifold.getBody1())))) continue;
+      const double mean = 2.0 * gap - closingSpeed(manifold, point) * length;
+      if (!(mean > gap)) continue;
+      saved.emplace_back(&point, point.getDistance());
+      point.setDistance(mean);
+    }
+  }
+}
+
+}  // namespace tabletop

@@ -1,0 +1,97 @@
+#pragma once
+
+#include <utility>
+#include <vector>
+
+#include <btBulletDynamicsCommon.h>
+
+namespace tabletop {
+
+/// Impacts inside a step. A step's contacts are found at its start, up to
+/// Bullet's breaking threshold (2 cm) ahead of touching. A point still
+/// apart that closes within the step is an impact at its own time: the
+/// step is cut there, and at the start of the next part the point touches
+/// and bounces (DynamicsWorld). Only points that touch get restitution:
+/// Bullet would give it to a point still 2 cm apart, less the gap over the
+/// step, so a dropped ball bounced short from above the floor, or stopped
+/// dead when the gap ate the whole rebound.
+
+/// How close, in metres, two bodies are when they count as touching.
+inline constexpr double kTouching = 1e-6;
+
+/// Points that close within this time, s, of each other strike together:
+/// a face landing on a face, found a few micrometres apart at one corner
+/// and touching at another (GJK's distance is good to about 1e-3 of
+/// itself), bounces on all four.
+inline constexpr double kSameInstant = 1e-5;
+
+/// The closing speed, m/s, below which an impact is inelastic, whatever
+/// the restitution: a drop of 2 mm. Slower closings are a resting
+/// contact's jitter (a light body under a heavy one, solved in a few
+/// sweeps, closes at a centimetre a second), and giving them restitution
+/// made stacks chatter. Bullet's own threshold is the same; Box2D's is
+/// 1 m/s.
+inline constexpr double kBounceSpeed = 0.2;
+
+/// The speed, m/s, at which the bodies at `point` of `manifold` approach
+/// each other along its normal (negative when they part).
+double closingSpeed(const btPersistentManifold& manifold, const btManifoldPoint& point);
+
+/// The first time, s, at which a gap of `gap` m closes from the closing
+/// speed `speed` and acceleration `accel` (constant), or infinity.
+double timeToClose(double gap, double speed, double accel);
+
+/// The combined restitution of the two bodies' Materials (0 without).
+double restitutionOf(const btPersistentManifold& manifold);
+
+/// The contacts of one part of a step, as found at its start: which bodies
+/// something touches (their supports hold them, so they are taken not to
+/// accelerate), when the next impact comes, and the speculative rows made
+/// to agree with the trapezoid rule.
+class ImpactScan {
+ public:
+  ImpactScan(btDispatcher& dispatcher, const std::vector<btManifoldPoint*>& bounced);
+
+  /// The rate, m/s^2, at which the bodies at `point` approach from their
+  /// forces (gravity), a body something touches taken as not accelerating.
+  double closingAcceleration(const btPersistentManifold& manifold, const btManifoldPoint& point) const;
+
+  /// The earliest time within `horizon` at which a point that does not
+  /// touch yet closes at more than `impactSpeed`; `horizon` if none.
+  double earliestImpact(double horizon, double impactSpeed) const;
+
+  /// The same for two bodies of a pair in `pairs` that have no contact
+  /// point yet, from their closest points (Bullet's GJK). Box pairs need
+  /// it: Bullet's separating-axis test, which gives them whole faces,
+  /// reports nothing while they are apart. The time is to half kTouching
+  /// past touch, where that test reports the faces.
+  double earliestSeparatedImpact(btOverlappingPairCache& pairs, double horizon, double impactSpeed) const;
+
+  /// Readies the points still apart of a body nothing touches (and the
+  /// points just bounced) for a solve of a part `length` s long whose
+  /// positions follow the trapezoid rule. Bullet's speculative row holds
+  /// the closing velocity at the part's end to gap / length, right for
+  /// positions that move with it (Euler); with the trapezoid rule they
+  /// move with the mean of the start and end velocities, and the row
+  /// slowed a body accelerating into an impact at the part's end and
+  /// stopped a ball in mid-air near the top of a low bounce. Each point's
+  /// gap is set to 2 gap - v0 length (v0 its closing speed at the start),
+  /// which holds the mean instead, unless that is less than the gap itself
+  /// (the bodies would meet inside the part even at v0: Bullet's row then
+  /// stops them). Two bodies that something touches are left as Bullet
+  /// has them: a support makes their motion other than their forces say,
+  /// and holding the mean let pushed bodies chatter and a standing
+  /// cylinder creep. `saved` gets the points and their gaps, to be put
+  /// back after the solve.
+  void holdMeanVelocity(double length, std::vector<std::pair<btManifoldPoint*, btScalar>>& saved) const;
+
+ private:
+  bool held(const btCollisionObject* object) const;
+  double accelerationTowards(const btCollisionObject& a, const btCollisionObject& b, const btVector3& normalOnB) const;
+
+  btDispatcher& dispatcher_;
+  const std::vector<btManifoldPoint*>& bounced_;
+  std::vector<const btCollisionObject*> held_;  // bodies a touching point (not a bounced one) holds
+};
+
+}  // namespace tabletop
