@@ -5,6 +5,8 @@
 #include <btBulletCollisionCommon.h>
 #include <BulletCollision/CollisionDispatch/btConvexConvexAlgorithm.h>
 
+#include "physics/PlaneVertices.h"
+
 namespace tabletop {
 
 /// Bullet's collision dispatcher with two changes to how contact points
@@ -29,6 +31,7 @@ class ContactDispatcher : public btCollisionDispatcher {
  private:
   // Bullet's convex-convex algorithm with multipoint perturbation.
   std::unique_ptr<btConvexConvexAlgorithm::CreateFunc> multipoint_;
+  PlaneVertices::CreateFunc planeVertices_;
 
   // Bullet's default near callback with a ContactResult in place of its
   // btManifoldResult.

@@ -18,13 +18,18 @@ double smallestExtent(const btCollisionShape& shape) {
   return std::min({extent.x(), extent.y(), extent.z()});
 }
 
-// The kept point of `manifold` nearest `point` on body A and within
-// `radius` of it, or -1.
+// The kept point of `manifold` nearest `point` and within `radius` of it,
+// or -1, measured on a body that moves (body A, unless it is static): a
+// corner sliding over the floor stays the same corner of the box, though
+// it is a new place on the floor every step.
 int keptPointWithin(const btPersistentManifold& manifold, const btManifoldPoint& point, double radius) {
+  const bool onB = manifold.getBody0()->isStaticOrKinematicObject();
   int nearest = -1;
   double nearestSquared = radius * radius;
   for (int p = 0; p < manifold.getNumContacts(); ++p) {
-    const double squared = (manifold.getContactPoint(p).m_localPointA - point.m_localPointA).length2();
+    const btManifoldPoint& kept = manifold.getContactPoint(p);
+    const double squared = onB ? (kept.m_localPointB - point.m_localPointB).length2()
+                               : (kept.m_localPointA - point.m_localPointA).length2();
     if (squared < nearestSquared) {
       nearestSquared = squared;
       nearest = p;

@@ -13,20 +13,19 @@ bool isSphere(const btCollisionObject* object) {
   return object->getCollisionShape()->getShapeType() == SPHERE_SHAPE_PROXYTYPE;
 }
 
-bool isBox(const btCollisionObject* object) {
-  return object->getCollisionShape()->getShapeType() == BOX_SHAPE_PROXYTYPE;
-}
-
-// A box against a box or against the table: the pairs whose contacts the
-// polyhedral clipping finds in full every step they touch. (Against the
-// ground plane a box gets one new point per step and relies on the points
-// kept from earlier steps.)
+// A box against a box or against the table, and a box or a hull against
+// the floor: the pairs whose touching points are all found afresh every
+// step they touch (polyhedral clipping, PlaneVertices), so a point kept
+// from an earlier step that has slid is stale.
 bool isClippedBoxPair(const btPersistentManifold& manifold) {
-  const auto clipped = [](const btCollisionObject* o) {
-    return isBox(o) || o->getCollisionShape()->getShapeType() == COMPOUND_SHAPE_PROXYTYPE;
+  const auto type = [](const btCollisionObject* o) { return o->getCollisionShape()->getShapeType(); };
+  const int a = type(manifold.getBody0()), b = type(manifold.getBody1());
+  const auto solidOnPlane = [](int solid, int plane) {
+    return plane == STATIC_PLANE_PROXYTYPE && (solid == BOX_SHAPE_PROXYTYPE || solid == CONVEX_HULL_SHAPE_PROXYTYPE);
   };
-  return (isBox(manifold.getBody0()) || isBox(manifold.getBody1())) && clipped(manifold.getBody0()) &&
-         clipped(manifold.getBody1());
+  if (solidOnPlane(a, b) || solidOnPlane(b, a)) return true;
+  const auto clipped = [](int t) { return t == BOX_SHAPE_PROXYTYPE || t == COMPOUND_SHAPE_PROXYTYPE; };
+  return (a == BOX_SHAPE_PROXYTYPE || b == BOX_SHAPE_PROXYTYPE) && clipped(a) && clipped(b);
 }
 
 // How far apart along the contact plane a point's two sides may slide
