@@ -21,7 +21,7 @@ ContactDispatcher::ContactDispatcher(btCollisionConfiguration* configuration)
     registerCollisionCreateFunc(other, CYLINDER_SHAPE_PROXYTYPE, multipoint_.get());
   }
   // Boxes and hulls on the floor: every vertex near it, every step.
-  for (const int solid : {BOX_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE}) {
+  for (const int solid : {BOX_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE, CYLINDER_SHAPE_PROXYTYPE}) {
     registerCollisionCreateFunc(solid, STATIC_PLANE_PROXYTYPE, &planeVertices_);
     registerCollisionCreateFunc(STATIC_PLANE_PROXYTYPE, solid, &planeVertices_);
   }

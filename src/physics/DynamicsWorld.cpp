@@ -21,7 +21,8 @@ bool isClippedBoxPair(const btPersistentManifold& manifold) {
   const auto type = [](const btCollisionObject* o) { return o->getCollisionShape()->getShapeType(); };
   const int a = type(manifold.getBody0()), b = type(manifold.getBody1());
   const auto solidOnPlane = [](int solid, int plane) {
-    return plane == STATIC_PLANE_PROXYTYPE && (solid == BOX_SHAPE_PROXYTYPE || solid == CONVEX_HULL_SHAPE_PROXYTYPE);
+    return plane == STATIC_PLANE_PROXYTYPE && (solid == BOX_SHAPE_PROXYTYPE || solid == CONVEX_HULL_SHAPE_PROXYTYPE ||
+                                               solid == CYLINDER_SHAPE_PROXYTYPE);
   };
   if (solidOnPlane(a, b) || solidOnPlane(b, a)) return true;
   const auto clipped = [](int t) { return t == BOX_SHAPE_PROXYTYPE || t == COMPOUND_SHAPE_PROXYTYPE; };

@@ -5,10 +5,11 @@
 
 namespace tabletop {
 
-/// A box or a convex hull (a cone) against the floor plane: every vertex
-/// within the contact breaking threshold of the plane is a contact point,
-/// found afresh each step, as polyhedral clipping finds a box's whole face
-/// on the table. Bullet's plane test adds one corner a step (and a few by
+/// A box, a convex hull (a cone) or a cylinder against the floor plane:
+/// the corners of the face nearest the plane (a cylinder's rims as 32
+/// points), at most four and spread out, are the contact points, found
+/// afresh each step, as polyhedral clipping finds a box's whole face on
+/// the table. Bullet's plane test adds one corner a step (and a few by
 /// perturbation) and keeps the rest from earlier steps; on a sliding cube
 /// those slid along with it up to 2 cm from where it touched, and it
 /// yawed by 19 degrees and stopped 20 mm short of its closed-form slide.
