@@ -18,8 +18,8 @@ namespace tabletop {
 enum class ContactSolver { SequentialImpulse, Dantzig };
 
 /// The largest island (normal and friction rows together) the Dantzig
-/// solver takes on: its cost grows as the cube of the rows (README, "Hard
-/// cases").
+/// solver takes on: its cost grows as the cube of the rows
+/// (docs/hard-cases.md).
 inline constexpr int kDirectRowLimit = 300;
 
 /// The scenario and command-line name ("sequential_impulse", "dantzig").

@@ -29,11 +29,11 @@ struct BulletSettings {
   /// all rows); 0 runs every iteration. With it, `iterations` is a cap.
   double solverTolerance = 0.0;
   /// How a spinning body's gyroscopic term enters (Bullet's default, the
-  /// implicit step in body axes; README, "Hard cases", compares them).
+  /// implicit step in body axes; docs/hard-cases.md, compares them).
   Gyroscopic gyroscopic = Gyroscopic::ImplicitBody;
 
-  // What the collision world models (README, "Modelling only what a scene
-  // needs", has what each saves and costs).
+  // What the collision world models (docs/bench.md, "Modelling only what a
+  // scene needs", has what each saves and costs).
   Broadphase broadphase = Broadphase::Dbvt;  ///< how overlapping pairs are found
   /// The table's legs join the collision world only once a body can reach
   /// them (its bounding box comes down to the underside of the top).
@@ -50,10 +50,10 @@ struct Settings {
   double timestep = 1.0 / 240.0;  ///< fixed step, seconds
   int iterations = 10;            ///< constraint solver iterations per step
   /// How contact impulses are found: sequential impulses (`iterations`
-  /// sweeps) or each island solved exactly (README, "Hard cases").
+  /// sweeps) or each island solved exactly (docs/hard-cases.md).
   ContactSolver solver = ContactSolver::SequentialImpulse;
   /// Full physics cuts a step into up to this many equal parts while a
-  /// body moves fast for its size (README, "Hard cases"); 1 never does.
+  /// body moves fast for its size (docs/hard-cases.md); 1 never does.
   int maxSubsteps = 64;
   double duration = 10.0;         ///< longest simulated time, seconds
   double gravity = 9.81;          ///< m/s^2, acting along -Y

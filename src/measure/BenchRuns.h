@@ -49,7 +49,7 @@ std::vector<ScalePoint> measureScale(const std::vector<int>& sizes, int repeats,
 /// The growth exponent of each switch's time per step over the sizes.
 std::map<std::string, double> exponents(const std::vector<ScalePoint>& points);
 
-/// One hard case, run once (README, "Hard cases").
+/// One hard case, run once (docs/hard-cases.md).
 struct HardPoint {
   std::string scene;
   Settings settings;

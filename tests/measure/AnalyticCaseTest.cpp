@@ -164,7 +164,7 @@ TEST(AnalyticCase, StackedCubeRidesAlongAfterSlippingBack) {
 // partial warm start of 0.85): each step starts from the whole of the last
 // step's impulses, and 10 sweeps do not finish shifting the load as the
 // rider slips. Full warm starting is what keeps tall stacks standing
-// (README, "Hard cases"); this is its price here.
+// (docs/hard-cases.md); this is its price here.
 TEST(AnalyticCase, StackedCubeSlipsOnPastTheThreshold) {
   const Case c = run("stack_rider_slips", Integrator::Trapezoid, 20);
   EXPECT_LE(measure(c, "A distance slid").error(), 1e-4);

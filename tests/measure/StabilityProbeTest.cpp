@@ -1,4 +1,4 @@
-// The hard cases (scenarios/hard/, README "Hard cases"): each scene run in
+// The hard cases (scenarios/hard/, docs/hard-cases.md): each scene run in
 // full physics and judged against its stated threshold, in SI units.
 
 #include "measure/StabilityProbe.h"
@@ -136,7 +136,7 @@ TEST(HardCase, FastSmallSphereNeverPassesThroughTheTop) {
 // every such rate. Before fast bodies were stepped in parts and impacts
 // were kept out of warm starting (World::substeps, DynamicsWorld), the
 // striker kept 14 of its 20 m/s at 240 Hz and the split held only from
-// 1 kHz: README, "Hard cases".
+// 1 kHz: docs/hard-cases.md.
 TEST(HardCase, FastSmallCubeStrikesAndNeverPassesThrough) {
   const Scenario s = hard("fast_small_cubes");
   const double top = s.table.height + 0.01;  // both centres while on the table, m
@@ -210,7 +210,7 @@ TEST(HardCase, CubesRestAtTheirHeightOnTheFloor) {
 // float's, 61 um, would be the whole tolerance of a fine scene). Once the
 // cube has fallen and tumbled on the floor the two runs are 3 cm apart, as
 // are two runs at the origin 1e-9 m apart at the start: a chaotic tumble,
-// not the distance (README, "Hard cases").
+// not the distance (docs/hard-cases.md).
 TEST(HardCase, FarTableBehavesAsAtTheOrigin) {
   Scenario near = shipped("example1_single_cube");
   Scenario far = near;
@@ -244,7 +244,7 @@ TEST(HardCase, FarTableBehavesAsAtTheOrigin) {
 // scene's. It does rise, by penetration recovery lifting bodies that sank
 // into what they landed on in a step: measured 0.10% in example 1, 0.42% in
 // example 2 (its struck cube, tumbling on the floor, sinks 1.4 cm into it),
-// 0.025% in example 3 and 0.016% in example 4 (README, "Hard cases"); the
+// 0.025% in example 3 and 0.016% in example 4 (docs/hard-cases.md); the
 // shares below were set after measuring. Before the parts counted a
 // turning body's farthest point in full, example 2's cube sank 4.5 cm and
 // the scene gained 1.0%. Before fast bodies were stepped in parts
@@ -383,7 +383,7 @@ TEST(HardCase, FreeRotationKeepsMomentumAndEnergy) {
 // thresholds were set after measuring. Run on to 40 s, the creep stays
 // 1.1 um; it was 54 um, the cylinder jolting as GJK found one point of
 // its rim a step, until cylinders got multipoint contacts
-// (ContactDispatcher; README, "Hard cases").
+// (ContactDispatcher; docs/hard-cases.md).
 TEST(HardCase, RestingContactComesToRestAndStays) {
   const Scenario s = hard("resting_contact");
   double settled = -1.0;  // when all came to rest after the last push
