@@ -23,6 +23,7 @@ function(tabletop_test name)
   # test had passed.
   gtest_discover_tests(${name}
     WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
-    PROPERTIES LABELS "${_labels}" ENVIRONMENT "MESA_SHADER_CACHE_DISABLE=true;LP_NUM_THREADS=0"
+    PROPERTIES LABELS "${_labels}" ENVIRONMENT "MESA_SHADER_CACHE_DISABLE=true"
+    ENVIRONMENT_MODIFICATION "LP_NUM_THREADS=set:0"
     DISCOVERY_TIMEOUT 60)
 endfunction()
