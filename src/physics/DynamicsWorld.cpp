@@ -190,7 +190,7 @@ void DynamicsWorld::integrateTransforms(btScalar) {
     if (!body->isActive() || body->isStaticOrKinematicObject()) continue;
     const btVector3 change = body->getLinearVelocity() - startVelocities_[static_cast<std::size_t>(i)];
     if (change.length2() > limit * limit) continue;  // an impact: keep Bullet's update
-    if (std::find(stopped_.begin(), stopped_.end(), body) != stopped_.end()) continue;  // likewise
+    if (stopped_.count(body) > 0) continue;  // likewise
     btTransform pose = body->getWorldTransform();
     pose.setOrigin(pose.getOrigin() - change * (timeStep / 2));
     body->proceedToTransform(pose);
@@ -256,7 +256,7 @@ void DynamicsWorld::solveConstraints(btContactSolverInfo& solverInfo) {
   stopped_.clear();
   for (const auto& [manifold, point] : closing) {
     if (!(point->getAppliedImpulse() > 0)) continue;
-    for (const btCollisionObject* o : {manifold->getBody0(), manifold->getBody1()}) stopped_.push_back(o);
+    stopped_.insert({manifold->getBody0(), manifold->getBody1()});
   }
   for (const auto& [point, impulses] : carried) {
     point->m_appliedImpulse = impulses.x();

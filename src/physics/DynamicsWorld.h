@@ -1,5 +1,7 @@
 #pragma once
 
+#include <unordered_set>
+#include <utility>
 #include <vector>
 
 #include <btBulletDynamicsCommon.h>
@@ -80,7 +82,7 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   bool mayCut_ = false;      // the part may end at an impact
   std::vector<std::pair<btManifoldPoint*, btScalar>> heldGaps_;
   std::vector<btManifoldPoint*> bounced_;  // points bounced at the start of the part
-  std::vector<const btCollisionObject*> stopped_;  // bodies a closing point stopped in the last solve  // points whose gap the part closes, and their gaps
+  std::unordered_set<const btCollisionObject*> stopped_;  // bodies a closing point stopped in the last solve
   std::vector<btVector3> startVelocities_;  // per non-static body, at the step's start
 };
 

@@ -59,14 +59,14 @@ ImpactScan::ImpactScan(btDispatcher& dispatcher, const std::vector<btManifoldPoi
     for (int p = 0; p < manifold.getNumContacts(); ++p) {
       const btManifoldPoint& point = manifold.getContactPoint(p);
       if (point.getDistance() > kTouching || std::find(bounced.begin(), bounced.end(), &point) != bounced.end()) continue;
-      held_.push_back(manifold.getBody0());
-      held_.push_back(manifold.getBody1());
+      held_.insert(manifold.getBody0());
+      held_.insert(manifold.getBody1());
     }
   }
 }
 
 bool ImpactScan::held(const btCollisionObject* object) const {
-  return std::find(held_.begin(), held_.end(), object) != held_.end();
+  return held_.count(object) > 0;
 }
 
 double ImpactScan::accelerationTowards(const btCollisionObject& a, const btCollisionObject& b,
@@ -157,12 +157,8 @@ double ImpactScan::earliestSeparatedImpact(btOverlappingPairCache& pairs, double
         // A point of manifold form: the normal on B, from B towards A.
         const btVector3 onB = closest.m_pointInWorld;
         const btVector3 onA = onB + closest.m_normalOnBInWorld * closest.m_distance;
-        const auto velocityAt = [](const btCollisionObject& o, const btVector3& p) {
-          const btRigidBody* body = btRigidBody::upcast(&o);
-          return body ? body->getVelocityInLocalPoint(p - body->getCenterOfMassPosition()) : btVector3(0, 0, 0);
-        };
         const btVector3& n = closest.m_normalOnBInWorld;
-        const double speed = -(velocityAt(a, onA) - velocityAt(b, onB)).dot(n);
+        const double speed = -(velocityAt(&a, onA) - velocityAt(&b, onB)).dot(n);
         const double accel = accelerationTowards(a, b, n);
         // To half the touching distance past touch: the separating-axis
         // test reports faces that only touch as apart.

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -91,7 +92,7 @@ class ImpactScan {
 
   btDispatcher& dispatcher_;
   const std::vector<btManifoldPoint*>& bounced_;
-  std::vector<const btCollisionObject*> held_;  // bodies a touching point (not a bounced one) holds
+  std::unordered_set<const btCollisionObject*> held_;  // bodies a touching point (not a bounced one) holds
 };
 
 }  // namespace tabletop

@@ -65,7 +65,9 @@ TEST(Camera, FitKeepsEveryBallInViewAndFitsTight) {
             closest = std::min({closest, px->column, w - px->column, px->row, h - px->row});
           }
         }
-        if (bounds.size() > 1) EXPECT_LT(closest, 0.05 * std::max(w, h)) << name << " " << w << "x" << h;
+        if (bounds.size() > 1) {
+          EXPECT_LT(closest, 0.05 * std::max(w, h)) << name << " " << w << "x" << h;
+        }
       }
     }
   }
