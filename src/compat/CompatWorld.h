@@ -39,6 +39,7 @@ class CompatWorld : public Simulation, private rules::ReleaseHandler {
   std::vector<EntityState> snapshot() const override;
   const std::vector<Event>& events() const override { return events_; }
   std::vector<Vec3> contactPoints() const override { return world_->contactPoints(); }
+  SolverUse solverUse() const override { return world_->solverUse(); }
 
  private:
   void release(std::size_t body, const Vec3& velocity) override;

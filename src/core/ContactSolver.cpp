@@ -8,17 +8,24 @@ namespace {
 // The names in scenario files, on the command line and in the output.
 constexpr EnumName<ContactSolver> kNames[] = {
     {ContactSolver::SequentialImpulse, "sequential_impulse"},
-    {ContactSolver::Dantzig, "dantzig"}};
+    {ContactSolver::Dantzig, "dantzig"},
+    {ContactSolver::Automatic, "auto"}};
 
 }  // namespace
 
 std::string_view toString(ContactSolver s) { return nameOf(s, kNames); }
+
+std::string describeUse(const SolverUse& use) {
+  return "islands solved exactly " + std::to_string(use.direct) + ", by sweeps " + std::to_string(use.swept) +
+         ", by sweeps after the pivoting failed " + std::to_string(use.fallbacks);
+}
 
 std::optional<ContactSolver> contactSolverFromString(std::string_view name) { return valueNamed(name, kNames); }
 
 std::string describeSolver(ContactSolver s, int iterations) {
   const std::string sweeps = std::to_string(iterations) + " iterations";
   if (s == ContactSolver::SequentialImpulse) return sweeps;
+  if (s == ContactSolver::Automatic) return "auto solver (dantzig where a load rests, else " + sweeps + ")";
   return std::string(toString(s)) + " solver (" + sweeps + " above " + std::to_string(kDirectRowLimit) + " rows)";
 }
 

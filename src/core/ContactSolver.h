@@ -15,24 +15,44 @@ namespace tabletop {
 ///    complementarity problem; an island of more than
 ///    kDirectRowLimit rows, or one the pivoting cannot solve, is left to
 ///    sequential impulses.
-enum class ContactSolver { SequentialImpulse, Dantzig };
+///  - Automatic: each island chosen for itself, by what it
+///    holds: the pivoting for one that carries a load (a body resting on
+///    another), sequential impulses for the rest (bodies on the table or
+///    the floor alone, or striking each other side on) and for islands
+///    over kDirectRowLimit rows.
+enum class ContactSolver { SequentialImpulse, Dantzig, Automatic };
+
+/// How a run's contact islands were solved, one count per island and step
+/// (or part of a step) with contacts.
+struct SolverUse {
+  long direct = 0;     ///< exactly, by the pivoting
+  long swept = 0;      ///< by sequential impulses, by choice or by size
+  long fallbacks = 0;  ///< meant for the pivoting, which failed on them (then swept)
+};
 
 /// The largest island (normal and friction rows together) the Dantzig
 /// solver takes on: its cost grows as the cube of the rows
 /// (docs/hard-cases.md).
 inline constexpr int kDirectRowLimit = 300;
 
-/// The scenario and command-line name ("sequential_impulse", "dantzig").
+/// The scenario and command-line name ("sequential_impulse", "dantzig",
+/// "auto").
 std::string_view toString(ContactSolver s);
 
 /// How a run's header names the solver: "10 iterations" for sequential
 /// impulses; "dantzig solver (10 iterations above 300 rows)" for Dantzig,
-/// whose islands ignore the count unless too large.
+/// whose islands ignore the count unless too large; "auto solver (dantzig
+/// where a load rests, else 10 iterations)".
 std::string describeSolver(ContactSolver s, int iterations);
+
+/// One line on how a run's islands were solved: "islands solved exactly
+/// 480, by sweeps 12, by sweeps after the pivoting failed 0".
+std::string describeUse(const SolverUse& use);
 
 /// Parses a name; nullopt if it is not one.
 std::optional<ContactSolver> contactSolverFromString(std::string_view name);
 
-inline constexpr ContactSolver kAllContactSolvers[] = {ContactSolver::SequentialImpulse, ContactSolver::Dantzig};
+inline constexpr ContactSolver kAllContactSolvers[] = {ContactSolver::SequentialImpulse, ContactSolver::Dantzig,
+                                                  ContactSolver::Automatic};
 
 }  // namespace tabletop

@@ -23,6 +23,7 @@ struct RunResult {
   std::vector<EntityState> entities;
   std::vector<Event> events;
   std::uint64_t stateHash = 0;
+  SolverUse solverUse;  ///< how the contact islands were solved (full physics and compat)
   /// False when the run stopped early (it diverged); `failure` says why,
   /// and the states are those at the last step checked.
   bool complete = true;

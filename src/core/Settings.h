@@ -49,8 +49,8 @@ struct BulletSettings {
 struct Settings {
   double timestep = 1.0 / 240.0;  ///< fixed step, seconds
   int iterations = 10;            ///< constraint solver iterations per step
-  /// How contact impulses are found: sequential impulses (`iterations`
-  /// sweeps) or each island solved exactly (docs/hard-cases.md).
+  /// How contact impulses are found: by `iterations` sweeps, every island
+  /// solved exactly, or each island its own way (docs/hard-cases.md).
   ContactSolver solver = ContactSolver::SequentialImpulse;
   /// Full physics cuts a step into up to this many equal parts while a
   /// body moves fast for its size (docs/hard-cases.md); 1 never does.

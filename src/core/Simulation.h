@@ -6,6 +6,7 @@
 
 #include "core/Arrow.h"
 #include "core/BodyMotion.h"
+#include "core/ContactSolver.h"
 #include "core/EntityState.h"
 #include "core/Event.h"
 #include "core/Vec3.h"
@@ -48,6 +49,8 @@ class Simulation {
   /// Where bodies touch now, in metres, for drawing (none in modes without
   /// contacts).
   virtual std::vector<Vec3> contactPoints() const { return {}; }
+  /// How the contact solver solved the islands so far (none in the rules).
+  virtual SolverUse solverUse() const { return {}; }
 };
 
 }  // namespace tabletop

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "physics/Impacts.h"
+#include "physics/IslandSolver.h"
 
 // The impacts of a part, resolved at its start (DynamicsWorld).
 namespace tabletop {
@@ -129,9 +130,14 @@ void DynamicsWorld::resolveTouchingImpacts(btContactSolverInfo& solverInfo) {
     bodies.push_back(body);
     before.emplace_back(body->getLinearVelocity(), body->getAngularVelocity());
   }
+  // Swept, never pivoted: restitution is exact only without the pivoting's
+  // compliance, and the energy blend below assumes a dissipative solve.
+  auto* islands = dynamic_cast<IslandSolver*>(m_constraintSolver);
   const auto solve = [&] {
+    if (islands != nullptr) islands->setSweepsOnly(true);
     m_constraintSolver->solveGroup(&bodies[0], bodies.size(), dispatcher->getInternalManifoldPointer(),
                                    dispatcher->getNumManifolds(), nullptr, 0, impact, m_debugDrawer, dispatcher);
+    if (islands != nullptr) islands->setSweepsOnly(false);
   };
   const double energyBefore = kineticEnergy(m_nonStaticRigidBodies);
   for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {

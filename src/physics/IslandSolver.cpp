@@ -1,22 +1,104 @@
 #include "physics/IslandSolver.h"
 
+#include <cmath>
+
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
+#include <BulletDynamics/Dynamics/btRigidBody.h>
 
 namespace tabletop {
+namespace {
 
-IslandSolver::IslandSolver(int rowLimit) : btMLCPSolver(&dantzig_), rowLimit_(rowLimit) {}
+// A point carries a load when the bodies touch (within this, m) ...
+constexpr double kLoadTouching = 1e-4;
+// ... and its normal is within 45 degrees of the vertical (cos 45).
+constexpr double kLoadNormal = 0.7071;
+
+bool isDynamic(const btCollisionObject* object) {
+  const btRigidBody* body = btRigidBody::upcast(object);
+  return body != nullptr && body->getInvMass() > 0;
+}
+
+}  // namespace
+
+IslandSolver::IslandSolver(ContactSolver choice, int rowLimit, double gravity)
+    : btMLCPSolver(&dantzig_), choice_(choice), rowLimit_(rowLimit), gravity_(std::abs(gravity)) {}
+
+bool IslandSolver::solveDirectly(btPersistentManifold** manifolds, int numManifolds, int numConstraints) const {
+  if (choice_ == ContactSolver::SequentialImpulse || numConstraints != 0) return false;
+  // Rows before setup: a normal and at most two friction rows per point.
+  long rows = 0;
+  for (int m = 0; m < numManifolds; ++m) rows += 3L * manifolds[m]->getNumContacts();
+  if (rows > rowLimit_) return false;
+  if (choice_ == ContactSolver::Dantzig) return true;
+  if (gravity_ == 0) return false;
+  for (int m = 0; m < numManifolds; ++m) {
+    const btPersistentManifold* manifold = manifolds[m];
+    if (!isDynamic(manifold->getBody0()) || !isDynamic(manifold->getBody1())) continue;
+    for (int p = 0; p < manifold->getNumContacts(); ++p) {
+      const btManifoldPoint& point = manifold->getContactPoint(p);
+      if (point.getDistance() <= kLoadTouching && std::abs(point.m_normalWorldOnB.y()) >= kLoadNormal) return true;
+    }
+  }
+  return false;
+}
+
+void IslandSolver::convertContacts(btPersistentManifold** manifolds, int numManifolds,
+                                   const btContactSolverInfo& info) {
+  btSequentialImpulseConstraintSolver::convertContacts(manifolds, numManifolds, info);
+  if (info.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS) dropSlidingCrossFriction(info.m_timeStep);
+}
+
+void IslandSolver::dropSlidingCrossFriction(double timeStep) {
+  // Bullet lays out each point's rows as its normal row, whose friction
+  // index is its first friction row, and that row followed by the second.
+  const int frictionRows = m_tmpSolverContactFrictionConstraintPool.size();
+  for (int c = 0; c < m_tmpSolverContactConstraintPool.size(); ++c) {
+    const int first = m_tmpSolverContactConstraintPool[c].m_frictionIndex;
+    if (first + 1 >= frictionRows || m_tmpSolverContactFrictionConstraintPool[first + 1].m_frictionIndex != c) continue;
+    const btSolverConstraint& along = m_tmpSolverContactFrictionConstraintPool[first];
+    if (along.m_jacDiagABInv == 0) continue;
+    // The first row lies along the slip when there is one (its right-hand
+    // side is the slip speed times the row's effective mass).
+    const double slip = std::abs(along.m_rhs / along.m_jacDiagABInv);
+    if (slip <= along.m_friction * gravity_ * timeStep) continue;
+    btSolverConstraint& across = m_tmpSolverContactFrictionConstraintPool[first + 1];
+    across.m_friction = 0;
+    across.m_lowerLimit = 0;
+    across.m_upperLimit = 0;
+  }
+}
+
+bool IslandSolver::solveMLCP(const btContactSolverInfo& info) {
+  if (m_A.rows() == 0) return true;
+  if (!info.m_splitImpulse) return btMLCPSolver::solveMLCP(info);
+  btMatrixXu a = m_A;  // the pivoting overwrites it
+  if (!m_solver->solveMLCP(m_A, m_b, m_x, m_lo, m_hi, m_limitDependencies, info.m_numIterations)) return false;
+  // The push out of penetration along the normals alone: friction rows
+  // pushing sideways would move bodies no force moved.
+  btVectorXu lo = m_lo;
+  btVectorXu hi = m_hi;
+  btAlignedObjectArray<int> normalsOnly = m_limitDependencies;
+  for (int i = 0; i < normalsOnly.size(); ++i) {
+    if (normalsOnly[i] < 0) continue;
+    lo[i] = 0;
+    hi[i] = 0;
+    normalsOnly[i] = -1;
+  }
+  return m_solver->solveMLCP(a, m_bSplit, m_xSplit, lo, hi, normalsOnly, info.m_numIterations);
+}
 
 btScalar IslandSolver::solveGroupCacheFriendlySetup(btCollisionObject** bodies, int numBodies,
                                                     btPersistentManifold** manifolds, int numManifolds,
                                                     btTypedConstraint** constraints, int numConstraints,
                                                     const btContactSolverInfo& info, btIDebugDraw* debugDrawer) {
-  // Rows before setup: a normal and two friction rows per contact point.
-  long rows = 0;
-  for (int m = 0; m < numManifolds; ++m) rows += 3L * manifolds[m]->getNumContacts();
-  directNow_ = numConstraints == 0 && rows <= rowLimit_;
+  directNow_ = !sweepsOnly_ && solveDirectly(manifolds, numManifolds, numConstraints);
+  counted_ = !sweepsOnly_ && numManifolds > 0;
   if (directNow_) {
+    btContactSolverInfo direct = info;
+    direct.m_globalCfm = kDirectCfm;
+    direct.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
     return btMLCPSolver::solveGroupCacheFriendlySetup(bodies, numBodies, manifolds, numManifolds, constraints,
-                                                      numConstraints, info, debugDrawer);
+                                                      numConstraints, direct, debugDrawer);
   }
   return btSequentialImpulseConstraintSolver::solveGroupCacheFriendlySetup(
       bodies, numBodies, manifolds, numManifolds, constraints, numConstraints, info, debugDrawer);
@@ -26,12 +108,20 @@ btScalar IslandSolver::solveGroupCacheFriendlyIterations(btCollisionObject** bod
                                                          btPersistentManifold** manifolds, int numManifolds,
                                                          btTypedConstraint** constraints, int numConstraints,
                                                          const btContactSolverInfo& info, btIDebugDraw* debugDrawer) {
-  if (directNow_) {
-    return btMLCPSolver::solveGroupCacheFriendlyIterations(bodies, numBodies, manifolds, numManifolds, constraints,
-                                                           numConstraints, info, debugDrawer);
+  if (!directNow_) {
+    if (counted_) ++use_.swept;
+    return btSequentialImpulseConstraintSolver::solveGroupCacheFriendlyIterations(
+        bodies, numBodies, manifolds, numManifolds, constraints, numConstraints, info, debugDrawer);
   }
-  return btSequentialImpulseConstraintSolver::solveGroupCacheFriendlyIterations(
+  const int fallbacksBefore = getNumFallbacks();
+  const btScalar result = btMLCPSolver::solveGroupCacheFriendlyIterations(
       bodies, numBodies, manifolds, numManifolds, constraints, numConstraints, info, debugDrawer);
+  if (getNumFallbacks() > fallbacksBefore) {
+    ++use_.fallbacks;
+  } else {
+    ++use_.direct;
+  }
+  return result;
 }
 
 }  // namespace tabletop

@@ -32,9 +32,7 @@ Pipeline::Pipeline(const Settings& settings, const TableSpec& table)
     : configuration(std::make_unique<btDefaultCollisionConfiguration>()),
       dispatcher(std::make_unique<ContactDispatcher>(configuration.get())),
       broadphase(makeBroadphase(settings.bullet.broadphase, table)),
-      solver(settings.solver == ContactSolver::Dantzig
-                 ? std::make_unique<IslandSolver>(kDirectRowLimit)
-                 : std::make_unique<btSequentialImpulseConstraintSolver>()),
+      solver(std::make_unique<IslandSolver>(settings.solver, kDirectRowLimit, settings.gravity)),
       world(std::make_unique<DynamicsWorld>(dispatcher.get(), broadphase.get(), solver.get(), configuration.get())) {
   // A box resting on the ground plane gets all its corner contacts in the
   // first step, not one more per step (which let it sink for a step).
@@ -60,16 +58,9 @@ Pipeline::Pipeline(const Settings& settings, const TableSpec& table)
   world->setSecondOrderPositions(settings.integrator == Integrator::Trapezoid);
   btContactSolverInfo& info = world->getSolverInfo();
   info.m_numIterations = settings.iterations;
-  if (settings.solver == ContactSolver::Dantzig) {
-    // One island at a time, so each is solved alone and the row limit
-    // applies to it; and a compliance of 1e-8 on every contact row (Bullet's
-    // global CFM), without which the four points of a face resting on a
-    // face, which are redundant, leave the pivoting a singular matrix (it
-    // failed on every step of a 100:1 stack). Measured on that stack at
-    // 240 Hz: 1e-8 lets it sink by nothing measurable; 1e-6 by 0.25 mm/s.
-    info.m_minimumSolverBatchSize = 1;
-    info.m_globalCfm = 1e-8;
-  }
+  // One island at a time, so each is solved its own way and the row limit
+  // applies to it (IslandSolver).
+  info.m_minimumSolverBatchSize = 1;
   // Split impulse for every penetration, not only those deeper than 4 cm:
   // pushing bodies apart then never leaves velocity behind, so a body
   // resting on the table does not bounce off it at the first step.

@@ -7,12 +7,13 @@
 #include "core/Settings.h"
 #include "core/TableSpec.h"
 #include "physics/DynamicsWorld.h"
+#include "physics/IslandSolver.h"
 
 namespace tabletop {
 
 /// Bullet's pipeline for one scene, built and configured from the settings:
 /// the collision configuration, the dispatcher (ContactDispatcher), the
-/// broadphase, the contact solver (sequential impulses or IslandSolver)
+/// broadphase, the contact solver (IslandSolver)
 /// and the dynamics world (DynamicsWorld), with the choices that make
 /// contacts right and runs deterministic (see Pipeline.cpp). A World owns
 /// one; it holds no bodies of its own.
@@ -24,7 +25,7 @@ struct Pipeline {
   std::unique_ptr<btDefaultCollisionConfiguration> configuration;
   std::unique_ptr<btCollisionDispatcher> dispatcher;
   std::unique_ptr<btBroadphaseInterface> broadphase;
-  std::unique_ptr<btSequentialImpulseConstraintSolver> solver;
+  std::unique_ptr<IslandSolver> solver;
   std::unique_ptr<DynamicsWorld> world;
 };
 

@@ -92,6 +92,7 @@ class World : public Simulation {
   std::vector<BodyMotion> motions() const override;
   const std::vector<Event>& events() const override { return events_; }
   std::vector<Vec3> contactPoints() const override;
+  SolverUse solverUse() const override { return pipeline_.solver->use(); }
 
  private:
   // A support index that names no body.

@@ -53,6 +53,7 @@ std::string formatText(const RunResult& r) {
   out << "  mode " << r.mode << ", timestep " << fixed(r.settings.timestep, 6) << " s, "
       << describeSolver(r.settings.solver, r.settings.iterations) << ", " << toString(r.settings.integrator) << " integrator; simulated " << fixed(r.simTime, 3) << " s in "
       << r.steps << " steps (" << fixed(r.wallSeconds, 3) << " s wall)\n";
+  if (r.mode != "rules") out << "  " << describeUse(r.solverUse) << "\n";
   if (!r.complete) out << "  INCOMPLETE, the run stopped: " << r.failure << "\n";
   // The name column fits the longest name, so the columns after it align.
   std::size_t nameWidth = 10;
@@ -108,6 +109,8 @@ nlohmann::json toJson(const RunResult& r) {
             {"floor_pairs_near_floor", r.settings.bullet.floorPairsNearFloor}}},
           {"sim_time", r.simTime},
           {"steps", r.steps},
+          {"islands",
+           {{"direct", r.solverUse.direct}, {"swept", r.solverUse.swept}, {"fallbacks", r.solverUse.fallbacks}}},
           {"wall_seconds", r.wallSeconds},
           {"entities", entities},
           {"events", events},

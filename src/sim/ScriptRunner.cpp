@@ -29,6 +29,7 @@ RunResult runScript(const Scenario& scenario, const Settings& settings, Simulati
   r.entities = sim.snapshot();
   r.events = sim.events();
   r.stateHash = stateHash(r.entities);
+  r.solverUse = sim.solverUse();
   return r;
 }
 

@@ -183,7 +183,7 @@ INSTANTIATE_TEST_SUITE_P(
                  "/settings/broadphase", "expected \"dbvt\", \"sap\" or \"simple\", got \"octree\""},
         BadInput{"UnknownSolver", R"({"version": 1, "name": "t", "settings": {"solver": "lemke"},
                    "entities": [{"name": "A", "shape": "cube", "size": 0.1, "position": [0, 0], "mass": 1}]})",
-                 "/settings/solver", "expected \"sequential_impulse\" or \"dantzig\", got \"lemke\""},
+                 "/settings/solver", "expected \"sequential_impulse\", \"dantzig\" or \"auto\", got \"lemke\""},
         BadInput{"UnknownGyroscopic", R"({"version": 1, "name": "t", "settings": {"gyroscopic": "rk4"},
                    "entities": [{"name": "A", "shape": "cube", "size": 0.1, "position": [0, 0], "mass": 1}]})",
                  "/settings/gyroscopic",
