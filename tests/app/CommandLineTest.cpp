@@ -73,8 +73,13 @@ TEST(CommandLine, RunTextHonoursOverrides) {
 TEST(CommandLine, RunHeaderNamesTheContactSolver) {
   const Outcome o = run(kBin + "tabletop run " + kScenarios + "hard/mass_ratio_100.json --duration 0.05");
   ASSERT_EQ(o.status, 0) << o.err;
-  EXPECT_NE(o.out.find(", dantzig solver (" + std::to_string(tabletop::Settings{}.iterations) + " iterations above " +
-                       std::to_string(tabletop::kDirectRowLimit) + " rows), trapezoid integrator;"),
+  EXPECT_NE(o.out.find(", auto solver (dantzig where a load rests, else " +
+                       std::to_string(tabletop::Settings{}.iterations) + " iterations), trapezoid integrator;"),
+            std::string::npos)
+      << o.out;
+  // Two stacks, each an island carrying a load, over 3 steps: 6 solved
+  // exactly, none swept.
+  EXPECT_NE(o.out.find("islands solved exactly 6, by sweeps 0, by sweeps after the pivoting failed 0"),
             std::string::npos)
       << o.out;
 }
