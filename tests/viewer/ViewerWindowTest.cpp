@@ -135,6 +135,15 @@ class ViewerWindow : public ::testing::Test {
   void SetUp() override {
     const char* display = std::getenv("DISPLAY");
     ASSERT_TRUE(display && *display) << "run under xvfb-run (ctest does)";
+    // xvfb-run may hand over before the server takes connections (seen once
+    // in a fresh CI run: the viewer and xdotool could not open the display),
+    // so wait until a client can connect, up to 20 s.
+    bool reachable = false;
+    for (int tries = 0; tries < 80 && !reachable; ++tries) {
+      reachable = !output("xdotool getdisplaygeometry 2>/dev/null").empty();
+      if (!reachable) std::this_thread::sleep_for(std::chrono::milliseconds(250));
+    }
+    ASSERT_TRUE(reachable) << "the X server at " << display << " takes no connections";
   }
 
   WindowDump dump(const std::string& window) {
@@ -157,8 +166,11 @@ TEST_F(ViewerWindow, ShowsTheSceneAndGPushesTheArrowedEntity) {
   ViewerProcess viewer({kTabletop, "view", kScenarios + "example2_two_cubes.json", "--no-script", "--size",
                         "640x480"});
   ASSERT_TRUE(viewer.started());
-  const std::string window =
-      output("timeout 20 xdotool search --sync --onlyvisible --name 'tabletop: example2_two_cubes' | head -n 1");
+  std::string window;
+  for (int tries = 0; tries < 4 && window.empty(); ++tries) {
+    window = output("timeout 5 xdotool search --sync --onlyvisible --name 'tabletop: example2_two_cubes' "
+                    "2>/dev/null | head -n 1");
+  }
   ASSERT_FALSE(window.empty()) << "no window appeared within 20 s";
   const std::string id = window.substr(0, window.find('\n'));
   // The first frame comes once the window is mapped; a slow build (the
