@@ -20,6 +20,15 @@ ContactDispatcher::ContactDispatcher(btCollisionConfiguration* configuration)
     registerCollisionCreateFunc(CYLINDER_SHAPE_PROXYTYPE, other, multipoint_.get());
     registerCollisionCreateFunc(other, CYLINDER_SHAPE_PROXYTYPE, multipoint_.get());
   }
+  // Cylinders and hulls on a box's face: as on the floor while they rest
+  // on it, else the pair's algorithm above (for a hull, clipping).
+  hullOnBox_ = std::make_unique<FaceVertices::CreateFunc>(
+      configuration->getCollisionAlgorithmCreateFunc(CONVEX_HULL_SHAPE_PROXYTYPE, BOX_SHAPE_PROXYTYPE));
+  cylinderOnBox_ = std::make_unique<FaceVertices::CreateFunc>(multipoint_.get());
+  registerCollisionCreateFunc(CYLINDER_SHAPE_PROXYTYPE, BOX_SHAPE_PROXYTYPE, cylinderOnBox_.get());
+  registerCollisionCreateFunc(BOX_SHAPE_PROXYTYPE, CYLINDER_SHAPE_PROXYTYPE, cylinderOnBox_.get());
+  registerCollisionCreateFunc(CONVEX_HULL_SHAPE_PROXYTYPE, BOX_SHAPE_PROXYTYPE, hullOnBox_.get());
+  registerCollisionCreateFunc(BOX_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE, hullOnBox_.get());
   // Boxes and hulls on the floor: every vertex near it, every step.
   for (const int solid : {BOX_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE, CYLINDER_SHAPE_PROXYTYPE}) {
     registerCollisionCreateFunc(solid, STATIC_PLANE_PROXYTYPE, &planeVertices_);

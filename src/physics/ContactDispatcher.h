@@ -5,6 +5,7 @@
 #include <btBulletCollisionCommon.h>
 #include <BulletCollision/CollisionDispatch/btConvexConvexAlgorithm.h>
 
+#include "physics/FaceVertices.h"
 #include "physics/PlaneVertices.h"
 
 namespace tabletop {
@@ -32,6 +33,7 @@ class ContactDispatcher : public btCollisionDispatcher {
   // Bullet's convex-convex algorithm with multipoint perturbation.
   std::unique_ptr<btConvexConvexAlgorithm::CreateFunc> multipoint_;
   PlaneVertices::CreateFunc planeVertices_;
+  std::unique_ptr<FaceVertices::CreateFunc> cylinderOnBox_, hullOnBox_;
 
   // Bullet's default near callback with a ContactResult in place of its
   // btManifoldResult.

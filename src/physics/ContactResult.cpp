@@ -18,18 +18,21 @@ double smallestExtent(const btCollisionShape& shape) {
   return std::min({extent.x(), extent.y(), extent.z()});
 }
 
+// Where `point` is on a body that moves (body A, unless it is static), in
+// that body's frame: a corner sliding over the floor stays the same corner
+// of the box, though it is a new place on the floor every step.
+const btVector3& onMovingBody(const btPersistentManifold& manifold, const btManifoldPoint& point) {
+  return manifold.getBody0()->isStaticOrKinematicObject() ? point.m_localPointB : point.m_localPointA;
+}
+
 // The kept point of `manifold` nearest `point` and within `radius` of it,
-// or -1, measured on a body that moves (body A, unless it is static): a
-// corner sliding over the floor stays the same corner of the box, though
-// it is a new place on the floor every step.
+// on the moving body, or -1.
 int keptPointWithin(const btPersistentManifold& manifold, const btManifoldPoint& point, double radius) {
-  const bool onB = manifold.getBody0()->isStaticOrKinematicObject();
   int nearest = -1;
   double nearestSquared = radius * radius;
   for (int p = 0; p < manifold.getNumContacts(); ++p) {
-    const btManifoldPoint& kept = manifold.getContactPoint(p);
-    const double squared = onB ? (kept.m_localPointB - point.m_localPointB).length2()
-                               : (kept.m_localPointA - point.m_localPointA).length2();
+    const double squared =
+        (onMovingBody(manifold, manifold.getContactPoint(p)) - onMovingBody(manifold, point)).length2();
     if (squared < nearestSquared) {
       nearestSquared = squared;
       nearest = p;
@@ -37,6 +40,12 @@ int keptPointWithin(const btPersistentManifold& manifold, const btManifoldPoint&
   }
   return nearest;
 }
+
+// How far apart along the contact plane a point's two sides may slide
+// before it is stale, metres: a point found in this step has none (to
+// rounding); one kept from an earlier step has the two bodies' relative
+// slide since. 1 um keeps the resting points of bodies that creep.
+constexpr double kStaleDrift = 1e-6;
 
 }  // namespace
 
@@ -90,6 +99,72 @@ void ContactResult::addContactPoint(const btVector3& normalOnBInWorld, const btV
     manifold.replaceContactPoint(point, kept);
   } else {
     manifold.addManifoldPoint(point);
+  }
+}
+
+void CarriedImpulses::save(btDispatcher& dispatcher) {
+  saved_.clear();
+  for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
+    const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
+    for (int p = 0; p < manifold->getNumContacts(); ++p) {
+      const btManifoldPoint& point = manifold->getContactPoint(p);
+      if (point.m_appliedImpulse == 0 && point.m_appliedImpulseLateral1 == 0 && point.m_appliedImpulseLateral2 == 0) {
+        continue;  // nothing to carry
+      }
+      saved_.push_back({manifold, manifold->getBody0(), manifold->getBody1(), onMovingBody(*manifold, point),
+                        point.m_appliedImpulse, point.m_appliedImpulseLateral1, point.m_appliedImpulseLateral2,
+                        point.getLifeTime()});
+    }
+  }
+}
+
+void CarriedImpulses::restore(btDispatcher& dispatcher) {
+  if (saved_.empty()) return;
+  for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
+    btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
+    std::vector<Saved*> gone;
+    for (Saved& s : saved_) {
+      if (s.manifold != manifold || s.body0 != manifold->getBody0() || s.body1 != manifold->getBody1()) continue;
+      bool kept = false;  // a kept or replaced point keeps its impulses exactly
+      for (int p = 0; p < manifold->getNumContacts() && !kept; ++p) {
+        const btManifoldPoint& point = manifold->getContactPoint(p);
+        kept = point.m_appliedImpulse == s.impulse && point.m_appliedImpulseLateral1 == s.lateral1 &&
+               point.m_appliedImpulseLateral2 == s.lateral2;
+      }
+      if (!kept) gone.push_back(&s);
+    }
+    if (gone.empty()) continue;
+    const double radius =
+        ContactResult::mergeRadius(*manifold->getBody0()->getCollisionShape(),
+                                   *manifold->getBody1()->getCollisionShape(), manifold->getContactBreakingThreshold());
+    for (int p = 0; p < manifold->getNumContacts(); ++p) {
+      btManifoldPoint& point = manifold->getContactPoint(p);
+      if (point.m_appliedImpulse != 0 || point.m_appliedImpulseLateral1 != 0 || point.m_appliedImpulseLateral2 != 0) {
+        continue;  // not made anew
+      }
+      auto nearest = gone.end();
+      double nearestSquared = radius * radius;
+      for (auto g = gone.begin(); g != gone.end(); ++g) {
+        const double squared = ((*g)->local - onMovingBody(*manifold, point)).length2();
+        if (squared < nearestSquared) nearestSquared = squared, nearest = g;
+      }
+      if (nearest == gone.end()) continue;
+      point.m_appliedImpulse = (*nearest)->impulse;
+      point.m_appliedImpulseLateral1 = (*nearest)->lateral1;
+      point.m_appliedImpulseLateral2 = (*nearest)->lateral2;
+      point.m_lifeTime = (*nearest)->lifeTime + (point.getLifeTime());
+      gone.erase(nearest);
+    }
+  }
+  saved_.clear();
+}
+
+void dropDriftedPoints(btPersistentManifold& manifold) {
+  for (int p = manifold.getNumContacts() - 1; p >= 0; --p) {
+    const btManifoldPoint& point = manifold.getContactPoint(p);
+    const btVector3 apart = point.getPositionWorldOnA() - point.getPositionWorldOnB();
+    const btVector3 slide = apart - point.m_normalWorldOnB * point.m_normalWorldOnB.dot(apart);
+    if (slide.length2() > kStaleDrift * kStaleDrift) manifold.removeContactPoint(p);
   }
 }
 

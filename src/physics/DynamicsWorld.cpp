@@ -4,6 +4,7 @@
 
 #include "core/Material.h"
 #include "physics/ContactMaterial.h"
+#include "physics/ContactResult.h"
 #include "physics/Impacts.h"
 
 namespace tabletop {
@@ -27,22 +28,6 @@ bool isClippedBoxPair(const btPersistentManifold& manifold) {
   if (solidOnPlane(a, b) || solidOnPlane(b, a)) return true;
   const auto clipped = [](int t) { return t == BOX_SHAPE_PROXYTYPE || t == COMPOUND_SHAPE_PROXYTYPE; };
   return (a == BOX_SHAPE_PROXYTYPE || b == BOX_SHAPE_PROXYTYPE) && clipped(a) && clipped(b);
-}
-
-// How far apart along the contact plane a point's two sides may slide
-// before it is stale, metres: a point found in this step has none (to
-// rounding); one kept from an earlier step has the two bodies' relative
-// slide since. 1 um keeps the resting points of bodies that creep.
-constexpr double kStaleDrift = 1e-6;
-
-// Removes the points that no longer mark where the bodies touch.
-void dropDriftedPoints(btPersistentManifold& manifold) {
-  for (int p = manifold.getNumContacts() - 1; p >= 0; --p) {
-    const btManifoldPoint& point = manifold.getContactPoint(p);
-    const btVector3 apart = point.getPositionWorldOnA() - point.getPositionWorldOnB();
-    const btVector3 slide = apart - point.m_normalWorldOnB * point.m_normalWorldOnB.dot(apart);
-    if (slide.length2() > kStaleDrift * kStaleDrift) manifold.removeContactPoint(p);
-  }
 }
 
 // Removes every point but the deepest (ties: the first).
@@ -195,6 +180,12 @@ void DynamicsWorld::integrateTransforms(btScalar) {
     pose.setOrigin(pose.getOrigin() - change * (timeStep / 2));
     body->proceedToTransform(pose);
   }
+}
+
+void DynamicsWorld::performDiscreteCollisionDetection() {
+  carried_.save(*getDispatcher());
+  btDiscreteDynamicsWorld::performDiscreteCollisionDetection();
+  carried_.restore(*getDispatcher());
 }
 
 void DynamicsWorld::solveConstraints(btContactSolverInfo& solverInfo) {

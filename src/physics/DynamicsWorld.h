@@ -6,6 +6,8 @@
 
 #include <btBulletDynamicsCommon.h>
 
+#include "physics/ContactResult.h"
+
 namespace tabletop {
 
 /// Bullet's discrete dynamics world with its contacts and integration
@@ -48,6 +50,9 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   /// part before.
   void step(double dt);
 
+  /// Bullet's narrow phase, with the impulses of points a compound dropped
+  /// carried over (CarriedImpulses).
+  void performDiscreteCollisionDetection() override;
   void solveConstraints(btContactSolverInfo& solverInfo) override;
   /// Reads the velocities a step starts from, adds gravity to the forces
   /// of the coming step, and applies the rolling-resistance impulses.
@@ -83,7 +88,8 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   std::vector<std::pair<btManifoldPoint*, btScalar>> heldGaps_;
   std::vector<btManifoldPoint*> bounced_;  // points bounced at the start of the part
   std::unordered_set<const btCollisionObject*> stopped_;  // bodies a closing point stopped in the last solve
-  std::vector<btVector3> startVelocities_;  // per non-static body, at the step's start
+  std::vector<btVector3> startVelocities_;
+  CarriedImpulses carried_;  // per non-static body, at the step's start
 };
 
 }  // namespace tabletop

@@ -3,15 +3,16 @@
 #include <btBulletCollisionCommon.h>
 #include <BulletCollision/CollisionDispatch/btActivatingCollisionAlgorithm.h>
 
+#include "physics/SolidCorners.h"
+
 namespace tabletop {
 
 /// A box, a convex hull (a cone) or a cylinder against the floor plane:
 /// the corners of the face nearest the plane (a cylinder's rims as 32
-/// points), at most four and spread out, are the contact points, found
-/// afresh each step, as polyhedral clipping finds a box's whole face on
-/// the table. Bullet's plane test adds one corner a step (and a few by
-/// perturbation) and keeps the rest from earlier steps; on a sliding cube
-/// those slid along with it up to 2 cm from where it touched, and it
+/// points), at most four, chosen by a CornerChoice and found again each
+/// step, as polyhedral clipping finds a box's whole face on the table.
+/// Bullet's plane test adds one corner a step (and a few by perturbation)
+/// and keeps the rest from earlier steps; on a sliding cube those slid along with it up to 2 cm from where it touched, and it
 /// yawed by 19 degrees and stopped 20 mm short of its closed-form slide.
 /// Because every touching vertex comes back each step, the pair's drifted
 /// points can be dropped, as a box pair's are (DynamicsWorld).
@@ -40,6 +41,7 @@ class PlaneVertices : public btActivatingCollisionAlgorithm {
 
  private:
   btPersistentManifold* manifold_ = nullptr;
+  CornerChoice choice_;
 };
 
 }  // namespace tabletop

@@ -1,0 +1,120 @@
+#include "physics/FaceVertices.h"
+
+#include <cmath>
+#include <new>
+#include <utility>
+#include <vector>
+
+#include "physics/ContactResult.h"
+
+namespace tabletop {
+
+FaceVertices::FaceVertices(const btCollisionAlgorithmConstructionInfo& info, const btCollisionObjectWrapper* body0,
+                           const btCollisionObjectWrapper* body1, btCollisionAlgorithmCreateFunc& otherwise)
+    : btActivatingCollisionAlgorithm(info, body0, body1), otherwiseFunc_(otherwise) {
+  manifold_ = m_dispatcher->getNewManifold(body0->getCollisionObject(), body1->getCollisionObject());
+}
+
+FaceVertices::~FaceVertices() {
+  if (otherwise_) {
+    otherwise_->~btCollisionAlgorithm();
+    m_dispatcher->freeCollisionAlgorithm(otherwise_);
+  }
+  if (manifold_) m_dispatcher->releaseManifold(manifold_);
+}
+
+void FaceVertices::getAllContactManifolds(btManifoldArray& manifolds) {
+  if (manifold_) manifolds.push_back(manifold_);
+  if (otherwise_) otherwise_->getAllContactManifolds(manifolds);
+}
+
+void FaceVertices::clearOtherwise() {
+  if (!otherwise_) return;
+  btManifoldArray manifolds;
+  otherwise_->getAllContactManifolds(manifolds);
+  for (int i = 0; i < manifolds.size(); ++i) manifolds[i]->clearManifold();
+}
+
+void FaceVertices::processCollision(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
+                                    const btDispatcherInfo& info, btManifoldResult* result) {
+  const bool boxFirst = body0->getCollisionShape()->getShapeType() == BOX_SHAPE_PROXYTYPE;
+  if (touchFace(boxFirst ? body0 : body1, boxFirst ? body1 : body0, boxFirst, result)) {
+    clearOtherwise();
+    return;
+  }
+  manifold_->clearManifold();
+  choice_.forget();
+  if (!otherwise_) {
+    btCollisionAlgorithmConstructionInfo construction(m_dispatcher, 1);
+    construction.m_manifold = nullptr;  // the constructor leaves it unset
+    otherwise_ = otherwiseFunc_.CreateCollisionAlgorithm(construction, body0, body1);
+  }
+  otherwise_->processCollision(body0, body1, info, result);
+}
+
+bool FaceVertices::touchFace(const btCollisionObjectWrapper* boxWrap, const btCollisionObjectWrapper* solidWrap,
+                             bool boxFirst, btManifoldResult* result) {
+  const auto* box = static_cast<const btBoxShape*>(boxWrap->getCollisionShape());
+  const auto* solid = static_cast<const btConvexShape*>(solidWrap->getCollisionShape());
+  const btTransform& boxPose = boxWrap->getWorldTransform();
+  const btTransform& solidPose = solidWrap->getWorldTransform();
+  const btVector3 half = box->getHalfExtentsWithMargin();
+
+  // The face the solid lies farthest out from, along its normal: where it
+  // rests if it rests on the box.
+  int axis = 0;
+  btScalar side = 1, separation = -BT_LARGE_FLOAT;
+  for (int i = 0; i < 3; ++i) {
+    for (const btScalar s : {btScalar(1), btScalar(-1)}) {
+      const btVector3 n = boxPose.getBasis().getColumn(i) * s;
+      const btVector3 lowest = solidPose * solid->localGetSupportingVertex(solidPose.getBasis().transpose() * -n);
+      const btScalar apart = n.dot(lowest - boxPose.getOrigin()) - half[i];
+      if (apart > separation) separation = apart, axis = i, side = s;
+    }
+  }
+  const btVector3 normal = boxPose.getBasis().getColumn(axis) * side;
+  const btScalar offset = normal.dot(boxPose.getOrigin()) + half[axis];
+  if (normal.dot(solidPose.getOrigin()) <= offset) return false;  // its centre is not out over the face
+
+  const btScalar threshold = manifold_->getContactBreakingThreshold();
+  std::vector<NearCorner> near;
+  const std::vector<btVector3> corners = solidCorners(*solid, solidPose.getBasis().transpose() * -normal);
+  for (int c = 0; c < static_cast<int>(corners.size()); ++c) {
+    const btVector3 vertex = solidPose * corners[static_cast<std::size_t>(c)];
+    const btScalar distance = normal.dot(vertex) - offset;
+    if (distance > threshold) continue;
+    // Over the face: within its edges along the two other axes.
+    const btVector3 local = boxPose.invXform(vertex);
+    for (int j = 0; j < 3; ++j) {
+      if (j != axis && std::abs(local[j]) > half[j]) return false;
+    }
+    near.push_back({c, distance, vertex});
+  }
+  result->setPersistentManifold(manifold_);
+  if (near.empty()) {
+    choice_.forget();
+  } else {
+    for (const auto& [corner, distance, vertex] : choice_.choose(*solid, std::move(near))) {
+      // The result's body B is its second body: the normal points from B to A.
+      if (boxFirst) {
+        result->addContactPoint(-normal, vertex, distance);
+      } else {
+        result->addContactPoint(normal, vertex - normal * distance, distance);
+      }
+    }
+  }
+  result->refreshContactPoints();
+  // Every point is found again each step it touches: one kept from an
+  // earlier step that has slid is stale.
+  dropDriftedPoints(*manifold_);
+  return true;
+}
+
+btCollisionAlgorithm* FaceVertices::CreateFunc::CreateCollisionAlgorithm(btCollisionAlgorithmConstructionInfo& info,
+                                                                       const btCollisionObjectWrapper* body0,
+                                                                       const btCollisionObjectWrapper* body1) {
+  void* memory = info.m_dispatcher1->allocateCollisionAlgorithm(sizeof(FaceVertices));
+  return new (memory) FaceVertices(info, body0, body1, *otherwise);
+}
+
+}  // namespace tabletop
