@@ -51,7 +51,7 @@ struct Settings {
   int iterations = 10;            ///< constraint solver iterations per step
   /// How contact impulses are found: by `iterations` sweeps, every island
   /// solved exactly, or each island its own way (docs/hard-cases.md).
-  ContactSolver solver = ContactSolver::SequentialImpulse;
+  ContactSolver solver = ContactSolver::Automatic;
   /// Full physics cuts a step into up to this many equal parts while a
   /// body moves fast for its size (docs/hard-cases.md); 1 never does.
   int maxSubsteps = 64;

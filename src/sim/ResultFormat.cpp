@@ -50,9 +50,11 @@ std::string describe(const Event& e) {
 std::string formatText(const RunResult& r) {
   std::ostringstream out;
   out << r.scenario << "  (" << r.file << ")\n";
-  out << "  mode " << r.mode << ", timestep " << fixed(r.settings.timestep, 6) << " s, "
-      << describeSolver(r.settings.solver, r.settings.iterations) << ", " << toString(r.settings.integrator) << " integrator; simulated " << fixed(r.simTime, 3) << " s in "
-      << r.steps << " steps (" << fixed(r.wallSeconds, 3) << " s wall)\n";
+  // The rules solve no contacts: their header names no solver.
+  out << "  mode " << r.mode << ", timestep " << fixed(r.settings.timestep, 6) << " s, ";
+  if (r.mode != "rules") out << describeSolver(r.settings.solver, r.settings.iterations) << ", ";
+  out << toString(r.settings.integrator) << " integrator; simulated " << fixed(r.simTime, 3) << " s in " << r.steps
+      << " steps (" << fixed(r.wallSeconds, 3) << " s wall)\n";
   if (r.mode != "rules") out << "  " << describeUse(r.solverUse) << "\n";
   if (!r.complete) out << "  INCOMPLETE, the run stopped: " << r.failure << "\n";
   // The name column fits the longest name, so the columns after it align.

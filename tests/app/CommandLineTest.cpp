@@ -62,7 +62,8 @@ TEST(CommandLine, RunTextHonoursOverrides) {
   const Outcome o = run(kBin + "tabletop run " + kScenarios +
                         "example1_single_cube.json --timestep 0.002 --iterations 20 --duration 0.5");
   ASSERT_EQ(o.status, 0) << o.err;
-  EXPECT_NE(o.out.find("timestep 0.002000 s, 20 iterations, trapezoid integrator; simulated 0.500 s in 250 steps"), std::string::npos)
+  EXPECT_NE(o.out.find("timestep 0.002000 s, auto solver (dantzig where a load rests, else 20 iterations), trapezoid "
+                        "integrator; simulated 0.500 s in 250 steps"), std::string::npos)
       << o.out;
   EXPECT_NE(o.out.find("push A Left"), std::string::npos);
   EXPECT_NE(o.out.find("state_hash"), std::string::npos);
@@ -603,7 +604,7 @@ TEST(CommandLine, ChoicesAreNamesInAnyCase) {
   const std::string example = kScenarios + "example1_single_cube.json";
   Outcome o = run(kBin + "tabletop run " + example + " --mode RULES --integrator Euler");
   EXPECT_EQ(o.status, 0) << o.err;
-  EXPECT_NE(o.out.find("mode rules, timestep 0.004167 s, 10 iterations, euler integrator"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("mode rules, timestep 0.004167 s, euler integrator"), std::string::npos) << o.out;
   o = run(kBin + "tabletop run " + example + " --mode nope");
   EXPECT_EQ(o.status, 2);
   EXPECT_NE(o.err.find("--mode: expected rules, compat or bullet, got 'nope'"), std::string::npos) << o.err;

@@ -46,8 +46,8 @@ Scenario shipped(const std::string& name) {
 constexpr double kRates[] = {10, 30, 60, 120, 240, 1000, 10000, 100000};
 
 // Towers of ten and twenty 0.1 m cubes stand for 60 s at 60 Hz with
-// sleeping off, the solver chosen per island (`auto`: the loaded islands
-// solved exactly): no cube drifts more than 1 mm from where it started
+// sleeping off, the solver chosen per island (the default `auto`: the
+// loaded islands solved exactly): no cube drifts more than 1 mm from where it started
 // (the goal), no contact is deeper than 0.1 mm, and in the last
 // second nothing moves faster than 0.1 mm/s. Measured: ten cubes 2e-4 mm,
 // 1e-5 mm, 0.7 um/s; twenty cubes 1e-3 mm, 1e-5 mm, 2.6 um/s.
