@@ -85,6 +85,7 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   double stepLength_ = 0.0;  // the step being taken, s
   double partLength_ = 0.0;  // the part of it being taken, s
   bool mayCut_ = false;      // the part may end at an impact
+  bool solved_ = false;      // a solve has run: contacts carry their loads
   std::vector<std::pair<btManifoldPoint*, btScalar>> heldGaps_;
   std::vector<btManifoldPoint*> bounced_;  // points bounced at the start of the part
   std::unordered_set<const btCollisionObject*> stopped_;  // bodies a closing point stopped in the last solve

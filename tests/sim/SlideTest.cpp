@@ -10,6 +10,7 @@
 #include <cmath>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -38,47 +39,111 @@ std::string describe(const Case& c) {
   return s.str();
 }
 
+struct Shape {
+  const char* shape;
+  const char* size;
+};
+
+// Every shape the scene format holds, standing on a face or its base.
+const Shape kShapes[] = {{"cube", "0.1"},
+                         {"cube", "0.06"},
+                         {"box", "[0.2, 0.05, 0.12]"},
+                         {"cylinder", "[0.05, 0.05, 0.1]"},
+                         {"cylinder", "[0.08, 0.08, 0.03]"},
+                         {"cylinder", "[0.05, 0.03, 0.1]"}};
+
+struct Outcome {
+  double travelled;  // m, from the start
+  double yawDegrees;
+};
+
+// One entity of 1.5 kg pushed by `push` (the push's JSON after the angle)
+// from the table's centre, or on the floor 3 m from it, towards open space.
+Outcome slide(const Case& c, const Shape& shape, double mu, double rollingFriction, const std::string& push) {
+  const bool table = std::string(c.support) == "table";
+  const double x0 = table ? -0.3 * std::cos(convertAngle(c.angle)) : 3.0;
+  const double z0 = table ? 0.3 * std::sin(convertAngle(c.angle)) : 0.0;
+  std::ostringstream text;
+  text << R"({"version": 1, "name": "slide", "table": {"size": [2.0, 2.0], "material": {"friction": 1}},
+    "ground": {"material": {"friction": 1}}, "settings": {"timestep": )"
+       << 1.0 / c.rate << R"(, "duration": 3}, "entities": [{"name": "A", "shape": ")" << shape.shape
+       << R"(", "size": )" << shape.size << R"(, "position": [)" << x0 << ", " << z0 << R"(], "on": ")" << c.support
+       << R"(", "mass": 1.5, "material": {"friction": )" << mu << R"(, "rolling_friction": )" << rollingFriction
+       << R"(}}], "script": [{"push": {"entity": "A", "angle": )" << c.angle << ", " << push << "}}]}";
+  const Scenario s = ScenarioLoader::loadText(text.str(), "slide.json");
+  auto sim = buildSimulation(s, s.settings, SimulationMode::Bullet);
+  const RunResult r = runScript(s, s.settings, *sim);
+  EXPECT_TRUE(r.complete) << describe(c);
+  const EntityState& a = r.entities.at(0);
+  return {std::hypot(a.position.x - x0, a.position.z - z0), a.yawDegrees};
+}
+
 TEST(Slide, TravelsTheClosedFormDistanceWithoutTurning) {
-  const struct {
-    const char* shape;
-    const char* size;
-  } shapes[] = {{"cube", "0.1"},
-                {"cube", "0.06"},
-                {"box", "[0.2, 0.05, 0.12]"},
-                {"cylinder", "[0.05, 0.05, 0.1]"},
-                {"cylinder", "[0.08, 0.08, 0.03]"},
-                {"cylinder", "[0.05, 0.03, 0.1]"}};
   const double mu = 0.25, mass = 1.5, impulse = 2.4;  // v0 = 1.6 m/s: d = 0.522 m
   const double v0 = impulse / mass, expected = v0 * v0 / (2.0 * mu * kG);
-  for (const auto& shape : shapes) {
+  for (const Shape& shape : kShapes) {
     for (const char* support : {"table", "ground"}) {
       for (double angle : {0.0, 30.0, 45.0, 77.0, 90.0}) {
         for (double rate : {30.0, 60.0, 240.0, 1000.0}) {
           const Case c{shape.shape, shape.size, support, angle, rate};
-          // From the table's centre, or on the floor 3 m from it; the push
-          // sends it towards open space.
-          const bool table = std::string(support) == "table";
-          const double x0 = table ? -0.3 * std::cos(convertAngle(angle)) : 3.0;
-          const double z0 = table ? 0.3 * std::sin(convertAngle(angle)) : 0.0;
-          std::ostringstream text;
-          text << R"({"version": 1, "name": "slide", "table": {"size": [2.0, 2.0], "material": {"friction": 1}},
-            "ground": {"material": {"friction": 1}},
-            "settings": {"timestep": )"
-               << 1.0 / rate << R"(, "duration": 3},
-            "entities": [{"name": "A", "shape": ")"
-               << shape.shape << R"(", "size": )" << shape.size << R"(, "position": [)" << x0 << ", " << z0
-               << R"(], "on": ")" << support << R"(", "mass": )" << mass << R"(, "material": {"friction": )" << mu
-               << R"(}}],
-            "script": [{"push": {"entity": "A", "angle": )"
-               << angle << R"(, "impulse": )" << impulse << "}}]}";
-          const Scenario s = ScenarioLoader::loadText(text.str(), "slide.json");
-          auto sim = buildSimulation(s, s.settings, SimulationMode::Bullet);
-          const RunResult r = runScript(s, s.settings, *sim);
-          ASSERT_TRUE(r.complete) << describe(c);
-          const EntityState& a = r.entities.at(0);
-          const double travelled = std::hypot(a.position.x - x0, a.position.z - z0);
-          EXPECT_NEAR(travelled, expected, 1e-4 * std::max(1.0, std::pow(60.0 / rate, 2))) << describe(c);
-          EXPECT_NEAR(a.yawDegrees, 0.0, 0.01) << describe(c);
+          const Outcome o = slide(c, shape, mu, 0.0, R"("impulse": )" + std::to_string(impulse));
+          EXPECT_NEAR(o.travelled, expected, 1e-4 * std::max(1.0, std::pow(60.0 / rate, 2))) << describe(c);
+          EXPECT_NEAR(o.yawDegrees, 0.0, 0.01) << describe(c);
+        }
+      }
+    }
+  }
+}
+
+// A sphere pushed through its centre slips, then rolls against its rolling
+// resistance rf (a lever arm): it slips until v = w r at
+// t1 = 2 v0 / (g (7 mu - 5 rf / r)), leaving at v1 = 5 v0 (mu - rf / r) /
+// (7 mu - 5 rf / r), then rolls to rest at a = 5 g rf / (7 r):
+// d = (v0 + v1) t1 / 2 + v1^2 / (2 a). Tolerance as for sliding.
+TEST(Slide, ASphereSlipsThenRollsTheClosedFormDistance) {
+  const double mu = 0.25, mass = 1.5;
+  for (const Shape& shape : {Shape{"sphere", "0.05"}, Shape{"sphere", "0.1"}}) {
+    const double r = std::stod(shape.size);
+    for (const double rf : {0.002, 0.01}) {
+      for (const double impulse : {0.3, 0.6}) {
+        const double v0 = impulse / mass, rho = rf / r;
+        const double t1 = 2.0 * v0 / (kG * (7.0 * mu - 5.0 * rho));
+        const double v1 = 5.0 * v0 * (mu - rho) / (7.0 * mu - 5.0 * rho);
+        const double expected = (v0 + v1) * t1 / 2.0 + v1 * v1 / (2.0 * 5.0 * kG * rho / 7.0);
+        for (const char* support : {"table", "ground"}) {
+          for (double angle : {0.0, 77.0}) {
+            for (double rate : {30.0, 60.0, 240.0, 1000.0}) {
+              const Case c{shape.shape, shape.size, support, angle, rate};
+              const Outcome o = slide(c, shape, mu, rf, R"("impulse": )" + std::to_string(impulse));
+              EXPECT_NEAR(o.travelled, expected, 1e-4 * std::max(1.0, std::pow(60.0 / rate, 2)))
+                  << describe(c) << ", rf " << rf << " m, v0 " << v0 << " m/s";
+            }
+          }
+        }
+      }
+    }
+  }
+}
+
+// A push by a `step` makes the entity travel that step and stop: within
+// 0.5% for every shape (a sphere slips, then rolls against its rolling
+// resistance), support, direction and rate from 30 Hz to 1 kHz.
+TEST(Slide, AStepPushTravelsItsStep) {
+  const double mu = 0.25, step = 0.2;
+  std::vector<Shape> shapes(std::begin(kShapes), std::end(kShapes));
+  shapes.push_back({"sphere", "0.05"});
+  shapes.push_back({"sphere", "0.1"});
+  for (const Shape& shape : shapes) {
+    const bool sphere = std::string(shape.shape) == "sphere";
+    for (const char* support : {"table", "ground"}) {
+      for (double angle : {0.0, 45.0, 77.0, 200.0}) {
+        for (double rate : {30.0, 60.0, 240.0, 1000.0}) {
+          const Case c{shape.shape, shape.size, support, angle, rate};
+          const Outcome o = slide(c, shape, mu, sphere ? 0.002 : 0.0, R"("step": )" + std::to_string(step));
+          EXPECT_NEAR(o.travelled, step, 0.005 * step) << describe(c);
+          if (!sphere) {
+            EXPECT_NEAR(o.yawDegrees, 0.0, 0.01) << describe(c);
+          }
         }
       }
     }
