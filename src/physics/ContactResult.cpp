@@ -18,11 +18,13 @@ double smallestExtent(const btCollisionShape& shape) {
   return std::min({extent.x(), extent.y(), extent.z()});
 }
 
-// Where `point` is on a body that moves (body A, unless it is static), in
-// that body's frame: a corner sliding over the floor stays the same corner
-// of the box, though it is a new place on the floor every step.
-const btVector3& onMovingBody(const btPersistentManifold& manifold, const btManifoldPoint& point) {
-  return manifold.getBody0()->isStaticOrKinematicObject() ? point.m_localPointB : point.m_localPointA;
+// How far apart two points of one manifold are as features of a body (m,
+// squared): on whichever body they lie nearer, a corner sliding over the
+// floor or over another body stays the same corner of its own body, though
+// it is a new place on the other every step. (A static body's side counts
+// too: a point fixed there is the same place.)
+double featureApart2(const btManifoldPoint& p, const btVector3& localA, const btVector3& localB) {
+  return std::min((p.m_localPointA - localA).length2(), (p.m_localPointB - localB).length2());
 }
 
 // The kept point of `manifold` nearest `point` and within `radius` of it,
@@ -31,8 +33,7 @@ int keptPointWithin(const btPersistentManifold& manifold, const btManifoldPoint&
   int nearest = -1;
   double nearestSquared = radius * radius;
   for (int p = 0; p < manifold.getNumContacts(); ++p) {
-    const double squared =
-        (onMovingBody(manifold, manifold.getContactPoint(p)) - onMovingBody(manifold, point)).length2();
+    const double squared = featureApart2(manifold.getContactPoint(p), point.m_localPointA, point.m_localPointB);
     if (squared < nearestSquared) {
       nearestSquared = squared;
       nearest = p;
@@ -111,7 +112,7 @@ void CarriedImpulses::save(btDispatcher& dispatcher) {
       if (point.m_appliedImpulse == 0 && point.m_appliedImpulseLateral1 == 0 && point.m_appliedImpulseLateral2 == 0) {
         continue;  // nothing to carry
       }
-      saved_.push_back({manifold, manifold->getBody0(), manifold->getBody1(), onMovingBody(*manifold, point),
+      saved_.push_back({manifold, manifold->getBody0(), manifold->getBody1(), point.m_localPointA, point.m_localPointB,
                         point.m_appliedImpulse, point.m_appliedImpulseLateral1, point.m_appliedImpulseLateral2,
                         point.getLifeTime()});
     }
@@ -145,7 +146,7 @@ void CarriedImpulses::restore(btDispatcher& dispatcher) {
       auto nearest = gone.end();
       double nearestSquared = radius * radius;
       for (auto g = gone.begin(); g != gone.end(); ++g) {
-        const double squared = ((*g)->local - onMovingBody(*manifold, point)).length2();
+        const double squared = featureApart2(point, (*g)->localA, (*g)->localB);
         if (squared < nearestSquared) nearestSquared = squared, nearest = g;
       }
       if (nearest == gone.end()) continue;

@@ -30,7 +30,7 @@ class ContactResult : public btManifoldResult {
 
   void addContactPoint(const btVector3& normalOnBInWorld, const btVector3& pointInWorld, btScalar depth) override;
 
-  /// Within this distance (m) of a kept point, measured on body A, a new
+  /// Within this distance (m) of a kept point, as a feature of either body, a new
   /// point replaces it: half the smallest extent of either shape, and never
   /// more than `breakingThreshold`.
   static double mergeRadius(const btCollisionShape& a, const btCollisionShape& b, double breakingThreshold);
@@ -44,7 +44,8 @@ class ContactResult : public btManifoldResult {
 /// degrees turned by 1.3 degrees and stopped 2.8 mm short. save() before
 /// the narrow phase; restore() after it gives a point made anew the
 /// impulses of the dropped point it stands for: the nearest within the
-/// merge radius on the moving body (ContactResult), each at most once.
+/// merge radius as a feature of either body (ContactResult), each at most
+/// once.
 class CarriedImpulses {
  public:
   void save(btDispatcher& dispatcher);
@@ -55,7 +56,7 @@ class CarriedImpulses {
     const btPersistentManifold* manifold;
     const btCollisionObject* body0;
     const btCollisionObject* body1;
-    btVector3 local;  // on the moving body
+    btVector3 localA, localB;  // in each body's frame
     btScalar impulse, lateral1, lateral2;
     int lifeTime;
   };
