@@ -76,32 +76,20 @@ bool FaceVertices::touchFace(const btCollisionObjectWrapper* boxWrap, const btCo
   const btScalar offset = normal.dot(boxPose.getOrigin()) + half[axis];
   if (normal.dot(solidPose.getOrigin()) <= offset) return false;  // its centre is not out over the face
 
-  const btScalar threshold = manifold_->getContactBreakingThreshold();
-  std::vector<NearCorner> near;
-  const std::vector<btVector3> corners = solidCorners(*solid, solidPose.getBasis().transpose() * -normal);
-  for (int c = 0; c < static_cast<int>(corners.size()); ++c) {
-    const btVector3 vertex = solidPose * corners[static_cast<std::size_t>(c)];
-    const btScalar distance = normal.dot(vertex) - offset;
-    if (distance > threshold) continue;
+  std::vector<NearCorner> near =
+      nearCorners(*solid, solidPose, normal, offset, manifold_->getContactBreakingThreshold());
+  for (const NearCorner& c : near) {
     // Over the face: within its edges along the two other axes.
-    const btVector3 local = boxPose.invXform(vertex);
+    const btVector3 local = boxPose.invXform(c.point);
     for (int j = 0; j < 3; ++j) {
       if (j != axis && std::abs(local[j]) > half[j]) return false;
     }
-    near.push_back({c, distance, vertex});
   }
   result->setPersistentManifold(manifold_);
   if (near.empty()) {
     choice_.forget();
   } else {
-    for (const auto& [corner, distance, vertex] : choice_.choose(*solid, std::move(near))) {
-      // The result's body B is its second body: the normal points from B to A.
-      if (boxFirst) {
-        result->addContactPoint(-normal, vertex, distance);
-      } else {
-        result->addContactPoint(normal, vertex - normal * distance, distance);
-      }
-    }
+    addCornerPoints(*result, choice_.choose(*solid, std::move(near)), normal, boxFirst);
   }
   result->refreshContactPoints();
   // Every point is found again each step it touches: one kept from an

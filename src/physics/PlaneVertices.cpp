@@ -29,27 +29,12 @@ void PlaneVertices::processCollision(const btCollisionObjectWrapper* body0, cons
   const btScalar offset = plane->getPlaneConstant() + normal.dot(planePose.getOrigin());
 
   result->setPersistentManifold(manifold_);
-  const btScalar threshold = manifold_->getContactBreakingThreshold();
-  std::vector<NearCorner> near;
-  const std::vector<btVector3> corners = solidCorners(*solid, solidPose.getBasis().transpose() * -normal);
-  for (int i = 0; i < static_cast<int>(corners.size()); ++i) {
-    const btVector3 vertex = solidPose * corners[static_cast<std::size_t>(i)];
-    const btScalar distance = normal.dot(vertex) - offset;
-    if (distance <= threshold) near.push_back({i, distance, vertex});
-  }
+  std::vector<NearCorner> near =
+      nearCorners(*solid, solidPose, normal, offset, manifold_->getContactBreakingThreshold());
   if (near.empty()) {
     choice_.forget();
-    result->refreshContactPoints();
-    return;
-  }
-  for (const auto& [corner, distance, vertex] : choice_.choose(*solid, std::move(near))) {
-    const btVector3 onPlane = vertex - normal * distance;
-    // The result's body B is its second body: the normal points from B to A.
-    if (planeFirst) {
-      result->addContactPoint(-normal, vertex, distance);
-    } else {
-      result->addContactPoint(normal, onPlane, distance);
-    }
+  } else {
+    addCornerPoints(*result, choice_.choose(*solid, std::move(near)), normal, planeFirst);
   }
   result->refreshContactPoints();
 }

@@ -34,6 +34,29 @@ std::vector<btVector3> solidCorners(const btConvexShape& solid, const btVector3&
   return out;
 }
 
+std::vector<NearCorner> nearCorners(const btConvexShape& solid, const btTransform& pose, const btVector3& normal,
+                                    btScalar offset, btScalar threshold) {
+  std::vector<NearCorner> near;
+  const std::vector<btVector3> corners = solidCorners(solid, pose.getBasis().transpose() * -normal);
+  for (int c = 0; c < static_cast<int>(corners.size()); ++c) {
+    const btVector3 vertex = pose * corners[static_cast<std::size_t>(c)];
+    const btScalar distance = normal.dot(vertex) - offset;
+    if (distance <= threshold) near.push_back({c, distance, vertex});
+  }
+  return near;
+}
+
+void addCornerPoints(btManifoldResult& result, const std::vector<NearCorner>& chosen, const btVector3& normal,
+                     bool supportFirst) {
+  for (const auto& [corner, distance, vertex] : chosen) {
+    if (supportFirst) {
+      result.addContactPoint(-normal, vertex, distance);
+    } else {
+      result.addContactPoint(normal, vertex - normal * distance, distance);
+    }
+  }
+}
+
 std::vector<NearCorner> CornerChoice::choose(const btConvexShape& solid, std::vector<NearCorner> near) {
   btVector3 low, high;
   solid.getAabb(btTransform::getIdentity(), low, high);

@@ -20,6 +20,18 @@ struct NearCorner {
   btVector3 point;
 };
 
+/// The corners of `solid` (at `pose`) within `threshold` of the plane
+/// normal . x = offset, on its side of it (`normal` points out of the
+/// support).
+std::vector<NearCorner> nearCorners(const btConvexShape& solid, const btTransform& pose, const btVector3& normal,
+                                    btScalar offset, btScalar threshold);
+
+/// Adds `chosen` to `result` as points of the solid on the support's plane;
+/// `supportFirst` when the support is the result's first body (the normal
+/// points from the second body to the first).
+void addCornerPoints(btManifoldResult& result, const std::vector<NearCorner>& chosen, const btVector3& normal,
+                     bool supportFirst);
+
 /// Which corners are a solid's contact points on one flat support, kept
 /// from step to step by the pair's algorithm.
 ///
