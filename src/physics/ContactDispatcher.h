@@ -10,8 +10,8 @@
 
 namespace tabletop {
 
-/// Bullet's collision dispatcher with two changes to how contact points
-/// are kept:
+/// Bullet's collision dispatcher with these changes to how contact points
+/// are found and kept:
 ///  - every manifold breaks at Bullet's absolute threshold
 ///    (gContactBreakingThreshold, 2 cm), not one relative to the shape,
 ///    which a sliding face outran every step, so the solver never started
@@ -22,9 +22,11 @@ namespace tabletop {
 ///  - a cylinder against a box or a cylinder gets a whole face contact in
 ///    one step, by Bullet's perturbation (the pair tried at three small
 ///    turns), where GJK alone finds one rim point a step and a cylinder at
-///    rest crept. Spheres and cones are left out, and box pairs already
-///    get whole faces by polyhedral clipping (docs/bullet-corrections.md
-///    says why and what was measured).
+///    rest crept (spheres and cones are left out);
+///  - a box, a cylinder or a hull resting on a box's face gets the corners
+///    of its face there (FaceVertices), and the floor likewise
+///    (PlaneVertices); docs/bullet-corrections.md says why and what was
+///    measured.
 class ContactDispatcher : public btCollisionDispatcher {
  public:
   explicit ContactDispatcher(btCollisionConfiguration* configuration);
@@ -33,7 +35,7 @@ class ContactDispatcher : public btCollisionDispatcher {
   // Bullet's convex-convex algorithm with multipoint perturbation.
   std::unique_ptr<btConvexConvexAlgorithm::CreateFunc> multipoint_;
   PlaneVertices::CreateFunc planeVertices_;
-  std::unique_ptr<FaceVertices::CreateFunc> cylinderOnBox_, hullOnBox_;
+  std::unique_ptr<FaceVertices::CreateFunc> cylinderOnBox_, hullOnBox_, boxOnBox_;
 
   // Bullet's default near callback with a ContactResult in place of its
   // btManifoldResult.

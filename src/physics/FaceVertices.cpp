@@ -37,11 +37,23 @@ void FaceVertices::clearOtherwise() {
 
 void FaceVertices::processCollision(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
                                     const btDispatcherInfo& info, btManifoldResult* result) {
-  const bool boxFirst = body0->getCollisionShape()->getShapeType() == BOX_SHAPE_PROXYTYPE;
-  if (touchFace(boxFirst ? body0 : body1, boxFirst ? body1 : body0, boxFirst, result)) {
+  // Two boxes: the first whose face the other rests on, the first body's
+  // tried first, so the roles stay put from step to step.
+  const bool box0 = body0->getCollisionShape()->getShapeType() == BOX_SHAPE_PROXYTYPE;
+  const bool box1 = body1->getCollisionShape()->getShapeType() == BOX_SHAPE_PROXYTYPE;
+  int solid = -1;
+  if (box0 && touchFace(body0, body1, true, result)) {
+    solid = 1;
+  } else if (box1 && touchFace(body1, body0, false, result)) {
+    solid = 0;
+  }
+  if (solid >= 0) {
+    if (solid != solid_) choice_.forget();  // the kept corners were the other body's
+    solid_ = solid;
     clearOtherwise();
     return;
   }
+  solid_ = -1;
   manifold_->clearManifold();
   choice_.forget();
   if (!otherwise_) {
@@ -82,7 +94,7 @@ bool FaceVertices::touchFace(const btCollisionObjectWrapper* boxWrap, const btCo
     // Over the face: within its edges along the two other axes.
     const btVector3 local = boxPose.invXform(c.point);
     for (int j = 0; j < 3; ++j) {
-      if (j != axis && std::abs(local[j]) > half[j]) return false;
+      if (j != axis && std::abs(local[j]) > half[j] + kOverEdge) return false;
     }
   }
   result->setPersistentManifold(manifold_);

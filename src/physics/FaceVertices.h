@@ -7,8 +7,8 @@
 
 namespace tabletop {
 
-/// A cylinder or a convex hull (a cone) against a box (the table's top, a
-/// cube, a box): while the solid rests on one of the box's faces, that is
+/// A box, a cylinder or a convex hull (a cone) against a box (the table's
+/// top, a cube, a box): while the solid rests on one of the box's faces, that is
 /// on the face's plane with every corner near it over the face, its
 /// corners there are the contact points, chosen as on the floor
 /// (PlaneVertices, CornerChoice), so a cylinder or a cone slides on the
@@ -55,6 +55,11 @@ class FaceVertices : public btActivatingCollisionAlgorithm {
   btCollisionAlgorithm* otherwise_ = nullptr;  // made when first needed
   btPersistentManifold* manifold_ = nullptr;
   CornerChoice choice_;
+  int solid_ = -1;  // which body's corners are the points (0 or 1), -1: none
+
+  // How far past a face's edge a corner still counts as over it, m: two
+  // equal boxes stacked square have their corners on each other's edges.
+  static constexpr btScalar kOverEdge = 1e-6;
 };
 
 }  // namespace tabletop

@@ -37,23 +37,6 @@ Pipeline::Pipeline(const Settings& settings, const TableSpec& table)
   // A box resting on the ground plane gets all its corner contacts in the
   // first step, not one more per step (which let it sink for a step).
   configuration->setPlaneConvexMultipointIterations();
-  // Box-box contacts by polyhedral clipping, and contact points that last
-  // while a face slides. Measured on a cube sliding to rest (the analytic
-  // case), Bullet's defaults made its face contact flicker:
-  //  - btBoxBoxDetector reports only penetrating corners, so a tilt of
-  //    1e-10 rad dropped a corner, and the 3-point solve that followed
-  //    jolted the cube (pitch and yaw rates of 0.15-0.5 rad/s);
-  //  - each manifold's breaking threshold is relative to the shape (1.7 mm
-  //    for a 0.1 m cube), so a face sliding 8 mm per step lost every point
-  //    every step, and the solver never started warm.
-  // The slide's error was 3-5 mm at 60-1000 Hz and not monotone in the
-  // step. Clipping the faces keeps corners a hair apart in the manifold,
-  // and a threshold of Bullet's absolute 2 cm (ContactDispatcher) keeps
-  // points, and their impulses, from step to step. With the SAT axes
-  // below: 0.024 mm at 60 Hz, 0.005 mm at 240 Hz, 0.0005 mm at 1000 Hz.
-  dispatcher->registerCollisionCreateFunc(
-      BOX_SHAPE_PROXYTYPE, BOX_SHAPE_PROXYTYPE,
-      configuration->getCollisionAlgorithmCreateFunc(CONVEX_HULL_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE));
   world->setGravity(btVector3(0, -settings.gravity, 0));
   world->setSecondOrderPositions(settings.integrator == Integrator::Trapezoid);
   btContactSolverInfo& info = world->getSolverInfo();

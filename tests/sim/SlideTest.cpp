@@ -1,5 +1,6 @@
 // Coulomb sliding on every support, in every direction: a body given v0
-// along the floor or the table top slides d = v0^2 / (2 mu g) and stops,
+// along the floor, the table top or a heavy slab resting on the floor
+// slides d = v0^2 / (2 mu g) and stops,
 // without turning, whatever the shape (a cube, a box, a cylinder standing
 // on its base, a flat one, a truncated cone), the direction (off the axes
 // too), the size and the rate. Tolerances: 0.1 mm on the distance from
@@ -58,23 +59,31 @@ struct Outcome {
 };
 
 // One entity of 1.5 kg pushed by `push` (the push's JSON after the angle)
-// from the table's centre, or on the floor 3 m from it, towards open space.
+// from the table's centre, or 3 m from it on the floor or on a slab there,
+// towards open space.
 Outcome slide(const Case& c, const Shape& shape, double mu, double rollingFriction, const std::string& push) {
   const bool table = std::string(c.support) == "table";
+  const bool slab = std::string(c.support) == "slab";
   const double x0 = table ? -0.3 * std::cos(convertAngle(c.angle)) : 3.0;
   const double z0 = table ? 0.3 * std::sin(convertAngle(c.angle)) : 0.0;
+  // The slab, 100 kg on the floor, is held by the floor's friction (1)
+  // against the slider's (at most 0.25 of 1.5 kg): it does not move.
+  const std::string base = slab ? R"({"name": "Base", "shape": "box", "size": [1.6, 0.1, 1.6], "position": [3, 0],
+    "on": "ground", "mass": 100, "material": {"friction": 1}}, )"
+                                : "";
   std::ostringstream text;
   text << R"({"version": 1, "name": "slide", "table": {"size": [2.0, 2.0], "material": {"friction": 1}},
     "ground": {"material": {"friction": 1}}, "settings": {"timestep": )"
-       << 1.0 / c.rate << R"(, "duration": 3}, "entities": [{"name": "A", "shape": ")" << shape.shape
-       << R"(", "size": )" << shape.size << R"(, "position": [)" << x0 << ", " << z0 << R"(], "on": ")" << c.support
+       << 1.0 / c.rate << R"(, "duration": 3}, "entities": [)" << base << R"({"name": "A", "shape": ")" << shape.shape
+       << R"(", "size": )" << shape.size << R"(, "position": [)" << x0 << ", " << z0
+       << R"(], "on": ")" << (slab ? "Base" : c.support)
        << R"(", "mass": 1.5, "material": {"friction": )" << mu << R"(, "rolling_friction": )" << rollingFriction
        << R"(}}], "script": [{"push": {"entity": "A", "angle": )" << c.angle << ", " << push << "}}]}";
   const Scenario s = ScenarioLoader::loadText(text.str(), "slide.json");
   auto sim = buildSimulation(s, s.settings, SimulationMode::Bullet);
   const RunResult r = runScript(s, s.settings, *sim);
   EXPECT_TRUE(r.complete) << describe(c);
-  const EntityState& a = r.entities.at(0);
+  const EntityState& a = r.entities.back();
   return {std::hypot(a.position.x - x0, a.position.z - z0), a.yawDegrees};
 }
 
@@ -82,7 +91,7 @@ TEST(Slide, TravelsTheClosedFormDistanceWithoutTurning) {
   const double mu = 0.25, mass = 1.5, impulse = 2.4;  // v0 = 1.6 m/s: d = 0.522 m
   const double v0 = impulse / mass, expected = v0 * v0 / (2.0 * mu * kG);
   for (const Shape& shape : kShapes) {
-    for (const char* support : {"table", "ground"}) {
+    for (const char* support : {"table", "ground", "slab"}) {
       for (double angle : {0.0, 30.0, 45.0, 77.0, 90.0}) {
         for (double rate : {30.0, 60.0, 240.0, 1000.0}) {
           const Case c{shape.shape, shape.size, support, angle, rate};
@@ -110,7 +119,7 @@ TEST(Slide, ASphereSlipsThenRollsTheClosedFormDistance) {
         const double t1 = 2.0 * v0 / (kG * (7.0 * mu - 5.0 * rho));
         const double v1 = 5.0 * v0 * (mu - rho) / (7.0 * mu - 5.0 * rho);
         const double expected = (v0 + v1) * t1 / 2.0 + v1 * v1 / (2.0 * 5.0 * kG * rho / 7.0);
-        for (const char* support : {"table", "ground"}) {
+        for (const char* support : {"table", "ground", "slab"}) {
           for (double angle : {0.0, 77.0}) {
             for (double rate : {30.0, 60.0, 240.0, 1000.0}) {
               const Case c{shape.shape, shape.size, support, angle, rate};
@@ -135,7 +144,7 @@ TEST(Slide, AStepPushTravelsItsStep) {
   shapes.push_back({"sphere", "0.1"});
   for (const Shape& shape : shapes) {
     const bool sphere = std::string(shape.shape) == "sphere";
-    for (const char* support : {"table", "ground"}) {
+    for (const char* support : {"table", "ground", "slab"}) {
       for (double angle : {0.0, 45.0, 77.0, 200.0}) {
         for (double rate : {30.0, 60.0, 240.0, 1000.0}) {
           const Case c{shape.shape, shape.size, support, angle, rate};
