@@ -24,6 +24,7 @@
 #include "scenario/ScenarioLoader.h"
 #include "measure/BenchRuns.h"
 #include "measure/Benchmark.h"
+#include "measure/LawSweep.h"
 #include "scenes/CubeField.h"
 #include "measure/ModelSwitch.h"
 #include "sim/ResultFormat.h"
@@ -112,6 +113,9 @@ void addBenchOptions(CLI::App& command, BenchOptions& options) {
   command.add_flag("--hard", options.hard,
                    "Run each hard case (SCENARIOS/hard) once at its own settings: cost, drift, penetration, "
                    "speed at rest, energy gain");
+  command.add_flag("--laws", options.laws,
+                   "Hold every shape on the table, the floor and a slab to the sliding, rolling and step laws, "
+                   "pushed at four angles, at each of --rates: the worst error against the closed form");
   enumOption(command.add_option("--modes", options.modes,
                                 "Modes to sweep (default bullet,compat,rules; compat and rules at the scene's own "
                                 "iterations)")
@@ -150,7 +154,8 @@ int runBench(const BenchOptions& asked, std::ostream& out, std::ostream& err) {
     }
   }
 
-  const bool sweepAsked = options.sweep || (!options.switches && options.scale.empty() && !options.hard);
+  const bool sweepAsked =
+      options.sweep || (!options.switches && options.scale.empty() && !options.hard && !options.laws);
   const SweepGrid grid{options.rates, options.iterations, options.integrators};
   const InterruptGuard interrupt;
   std::vector<BenchPoint> points;
@@ -181,8 +186,15 @@ int runBench(const BenchOptions& asked, std::ostream& out, std::ostream& err) {
     }
   }
 
+  std::vector<LawPoint> lawPoints;
+  if (options.laws && !interrupt.requested()) {
+    Progress progress(err);
+    lawPoints = measureLaws(options.rates, hooks(interrupt, progress));
+  }
+
   if (options.json) {
     out << nlohmann::json{{"sweep", toJson(sweepTable(points))},
+                          {"laws", toJson(lawTable(lawPoints))},
                           {"switches", toJson(switchTable(switchPoints))},
                           {"scale", toJson(scaleTable(scalePoints))},
                           {"growth_exponents", exponents(scalePoints)},
@@ -207,7 +219,11 @@ int runBench(const BenchOptions& asked, std::ostream& out, std::ostream& err) {
       out << gap << toText(scaleTable(scalePoints));
       gap = "\n";
     }
-    if (!hardPoints.empty()) out << gap << toText(hardTable(hardPoints));
+    if (!hardPoints.empty()) {
+      out << gap << toText(hardTable(hardPoints));
+      gap = "\n";
+    }
+    if (!lawPoints.empty()) out << gap << toText(lawTable(lawPoints));
   }
   int status = kExitOk;
   if (options.frontFile && sweepAsked && !interrupt.requested()) {
@@ -224,7 +240,8 @@ int runBench(const BenchOptions& asked, std::ostream& out, std::ostream& err) {
         {"bench.csv", sweepAsked ? sweepTable(points) : ResultTable{}},
         {"switches.csv", switchTable(switchPoints)},
         {"scale.csv", scaleTable(scalePoints)},
-        {"hard.csv", hardTable(hardPoints)}};
+        {"hard.csv", hardTable(hardPoints)},
+        {"laws.csv", lawTable(lawPoints)}};
     for (const auto& [file, table] : sections) {
       if (problem.empty() && !table.rows.empty()) problem = AtomicFile::write((dir / file).string(), toCsv(table));
     }

@@ -9,15 +9,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
-#include "core/Angle.h"
 #include "core/Simulation.h"
-#include "scenario/ScenarioLoader.h"
+#include "scenes/PushScene.h"
 #include "sim/SceneBuilder.h"
 #include "sim/ScriptRunner.h"
 
@@ -25,20 +23,6 @@ namespace tabletop {
 namespace {
 
 constexpr double kG = 9.81;  // m/s^2
-
-struct Case {
-  const char* shape;
-  const char* size;
-  const char* support;  // "table" or "ground"
-  double angle;         // degrees, the push's world angle
-  double rate;          // Hz
-};
-
-std::string describe(const Case& c) {
-  std::ostringstream s;
-  s << c.shape << " " << c.size << " on the " << c.support << ", at " << c.angle << " deg, " << c.rate << " Hz";
-  return s.str();
-}
 
 struct Shape {
   const char* shape;
@@ -58,44 +42,27 @@ struct Outcome {
   double yawDegrees;
 };
 
-// One entity of 1.5 kg pushed by `push` (the push's JSON after the angle)
-// from the table's centre, or 3 m from it on the floor or on a slab there,
-// towards open space.
-Outcome slide(const Case& c, const Shape& shape, double mu, double rollingFriction, const std::string& push) {
-  const bool table = std::string(c.support) == "table";
-  const bool slab = std::string(c.support) == "slab";
-  const double x0 = table ? -0.3 * std::cos(convertAngle(c.angle)) : 3.0;
-  const double z0 = table ? 0.3 * std::sin(convertAngle(c.angle)) : 0.0;
-  // The slab, 100 kg on the floor, is held by the floor's friction (1)
-  // against the slider's (at most 0.25 of 1.5 kg): it does not move.
-  const std::string base = slab ? R"({"name": "Base", "shape": "box", "size": [1.6, 0.1, 1.6], "position": [3, 0],
-    "on": "ground", "mass": 100, "material": {"friction": 1}}, )"
-                                : "";
-  std::ostringstream text;
-  text << R"({"version": 1, "name": "slide", "table": {"size": [2.0, 2.0], "material": {"friction": 1}},
-    "ground": {"material": {"friction": 1}}, "settings": {"timestep": )"
-       << 1.0 / c.rate << R"(, "duration": 3}, "entities": [)" << base << R"({"name": "A", "shape": ")" << shape.shape
-       << R"(", "size": )" << shape.size << R"(, "position": [)" << x0 << ", " << z0
-       << R"(], "on": ")" << (slab ? "Base" : c.support)
-       << R"(", "mass": 1.5, "material": {"friction": )" << mu << R"(, "rolling_friction": )" << rollingFriction
-       << R"(}}], "script": [{"push": {"entity": "A", "angle": )" << c.angle << ", " << push << "}}]}";
-  const Scenario s = ScenarioLoader::loadText(text.str(), "slide.json");
+// The pushed entity's scene (scenes/PushScene.h), run to its end.
+Outcome slide(const PushCase& c) {
+  const Scenario s = pushScene(c);
   auto sim = buildSimulation(s, s.settings, SimulationMode::Bullet);
   const RunResult r = runScript(s, s.settings, *sim);
   EXPECT_TRUE(r.complete) << describe(c);
   const EntityState& a = r.entities.back();
+  const auto [x0, z0] = pushStart(c);
   return {std::hypot(a.position.x - x0, a.position.z - z0), a.yawDegrees};
 }
 
 TEST(Slide, TravelsTheClosedFormDistanceWithoutTurning) {
-  const double mu = 0.25, mass = 1.5, impulse = 2.4;  // v0 = 1.6 m/s: d = 0.522 m
-  const double v0 = impulse / mass, expected = v0 * v0 / (2.0 * mu * kG);
+  const double mu = 0.25, impulse = 2.4;  // v0 = 1.6 m/s: d = 0.522 m
+  const double v0 = impulse / kPushedMass, expected = v0 * v0 / (2.0 * mu * kG);
   for (const Shape& shape : kShapes) {
     for (const char* support : {"table", "ground", "slab"}) {
       for (double angle : {0.0, 30.0, 45.0, 77.0, 90.0}) {
         for (double rate : {30.0, 60.0, 240.0, 1000.0}) {
-          const Case c{shape.shape, shape.size, support, angle, rate};
-          const Outcome o = slide(c, shape, mu, 0.0, R"("impulse": )" + std::to_string(impulse));
+          PushCase c{shape.shape, shape.size, support, angle, rate, mu};
+          c.impulse = impulse;
+          const Outcome o = slide(c);
           EXPECT_NEAR(o.travelled, expected, 1e-4 * std::max(1.0, std::pow(60.0 / rate, 2))) << describe(c);
           EXPECT_NEAR(o.yawDegrees, 0.0, 0.01) << describe(c);
         }
@@ -110,20 +77,21 @@ TEST(Slide, TravelsTheClosedFormDistanceWithoutTurning) {
 // (7 mu - 5 rf / r), then rolls to rest at a = 5 g rf / (7 r):
 // d = (v0 + v1) t1 / 2 + v1^2 / (2 a). Tolerance as for sliding.
 TEST(Slide, ASphereSlipsThenRollsTheClosedFormDistance) {
-  const double mu = 0.25, mass = 1.5;
+  const double mu = 0.25;
   for (const Shape& shape : {Shape{"sphere", "0.05"}, Shape{"sphere", "0.1"}}) {
     const double r = std::stod(shape.size);
     for (const double rf : {0.002, 0.01}) {
       for (const double impulse : {0.3, 0.6}) {
-        const double v0 = impulse / mass, rho = rf / r;
+        const double v0 = impulse / kPushedMass, rho = rf / r;
         const double t1 = 2.0 * v0 / (kG * (7.0 * mu - 5.0 * rho));
         const double v1 = 5.0 * v0 * (mu - rho) / (7.0 * mu - 5.0 * rho);
         const double expected = (v0 + v1) * t1 / 2.0 + v1 * v1 / (2.0 * 5.0 * kG * rho / 7.0);
         for (const char* support : {"table", "ground", "slab"}) {
           for (double angle : {0.0, 77.0}) {
             for (double rate : {30.0, 60.0, 240.0, 1000.0}) {
-              const Case c{shape.shape, shape.size, support, angle, rate};
-              const Outcome o = slide(c, shape, mu, rf, R"("impulse": )" + std::to_string(impulse));
+              PushCase c{shape.shape, shape.size, support, angle, rate, mu, rf};
+              c.impulse = impulse;
+              const Outcome o = slide(c);
               EXPECT_NEAR(o.travelled, expected, 1e-4 * std::max(1.0, std::pow(60.0 / rate, 2)))
                   << describe(c) << ", rf " << rf << " m, v0 " << v0 << " m/s";
             }
@@ -147,8 +115,9 @@ TEST(Slide, AStepPushTravelsItsStep) {
     for (const char* support : {"table", "ground", "slab"}) {
       for (double angle : {0.0, 45.0, 77.0, 200.0}) {
         for (double rate : {30.0, 60.0, 240.0, 1000.0}) {
-          const Case c{shape.shape, shape.size, support, angle, rate};
-          const Outcome o = slide(c, shape, mu, sphere ? 0.002 : 0.0, R"("step": )" + std::to_string(step));
+          PushCase c{shape.shape, shape.size, support, angle, rate, mu, sphere ? 0.002 : 0.0};
+          c.step = step;
+          const Outcome o = slide(c);
           EXPECT_NEAR(o.travelled, step, 0.005 * step) << describe(c);
           if (!sphere) {
             EXPECT_NEAR(o.yawDegrees, 0.0, 0.01) << describe(c);

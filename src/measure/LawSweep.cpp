@@ -1,0 +1,127 @@
+#include "measure/LawSweep.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <string>
+#include <tuple>
+
+#include "physics/StepPush.h"
+#include "sim/SceneBuilder.h"
+#include "sim/ScriptRunner.h"
+
+namespace tabletop {
+namespace {
+
+struct ShapeSize {
+  const char* shape;
+  const char* size;
+  double radius;  // a sphere's, m
+};
+
+const ShapeSize kSolids[] = {{"cube", "0.1", 0},
+                             {"box", "[0.2, 0.05, 0.12]", 0},
+                             {"cylinder", "[0.05, 0.05, 0.1]", 0},
+                             {"cylinder", "[0.08, 0.08, 0.03]", 0},
+                             {"cylinder", "[0.05, 0.03, 0.1]", 0}};
+const ShapeSize kSpheres[] = {{"sphere", "0.05", 0.05}, {"sphere", "0.1", 0.1}};
+const char* const kSupports[] = {"table", "ground", "slab"};
+const double kAngles[] = {0.0, 45.0, 77.0, 200.0};
+
+constexpr double kSlideImpulse = 2.4;  // N s: v0 = 1.6 m/s
+constexpr double kRollImpulse = 0.6;   // N s: v0 = 0.4 m/s
+constexpr double kRollingFriction = 0.002;  // m
+constexpr double kStep = 0.2;          // m
+
+// One law for one shape on one support at one rate: the worst over angles.
+LawPoint measure(const std::string& law, const ShapeSize& shape, const char* support, double rate) {
+  LawPoint point{law, std::string(shape.shape) + " " + shape.size, support, rate, 0.0, 0.0};
+  const bool sphere = shape.radius > 0;
+  for (const double angle : kAngles) {
+    PushCase c{shape.shape, shape.size, support, angle, rate};
+    if (sphere) c.rollingFriction = kRollingFriction;
+    if (law == "step") {
+      c.step = kStep;
+    } else {
+      c.impulse = sphere ? kRollImpulse : kSlideImpulse;
+    }
+    const Scenario s = pushScene(c);
+    const double g = s.settings.gravity, v0 = c.impulse / kPushedMass;
+    const double expected = law == "step"    ? kStep
+                            : law == "roll" ? rollingDistance(v0, c.friction, c.rollingFriction, shape.radius, g)
+                                            : slidingDistance(v0, c.friction, g);
+    auto sim = buildSimulation(s, s.settings, SimulationMode::Bullet);
+    const RunResult r = runScript(s, s.settings, *sim);
+    const EntityState& a = r.entities.back();
+    const auto [x0, z0] = pushStart(c);
+    const double error = r.complete ? std::abs(std::hypot(a.position.x - x0, a.position.z - z0) - expected) : INFINITY;
+    point.worstError = std::max(point.worstError, error);
+    if (!sphere) point.worstTurn = std::max(point.worstTurn, std::abs(a.yawDegrees));
+  }
+  return point;
+}
+
+}  // namespace
+
+std::vector<LawPoint> measureLaws(const std::vector<double>& rates, const MeasureHooks& hooks) {
+  std::vector<std::tuple<std::string, const ShapeSize*>> jobs;
+  for (const ShapeSize& s : kSolids) jobs.emplace_back("slide", &s);
+  for (const ShapeSize& s : kSpheres) jobs.emplace_back("roll", &s);
+  for (const ShapeSize& s : kSolids) jobs.emplace_back("step", &s);
+  for (const ShapeSize& s : kSpheres) jobs.emplace_back("step", &s);
+  hooks.start(static_cast<long>(jobs.size() * std::size(kSupports) * rates.size()));
+  std::vector<LawPoint> points;
+  for (const auto& [law, shape] : jobs) {
+    for (const char* support : kSupports) {
+      for (const double rate : rates) {
+        if (hooks.stop()) return points;
+        points.push_back(measure(law, *shape, support, rate));
+        hooks.advance(law + " " + shape->shape);
+      }
+    }
+  }
+  return points;
+}
+
+ResultTable lawTable(const std::vector<LawPoint>& points) {
+  ResultTable t;
+  t.title = "laws: the worst error over pushes at 0, 45, 77 and 200 degrees, against the closed form";
+  std::vector<double> rates;
+  for (const LawPoint& p : points) {
+    if (std::find(rates.begin(), rates.end(), p.rate) == rates.end()) rates.push_back(p.rate);
+  }
+  t.columns = {{"law", "law"}, {"shape", "shape"}, {"support", "support"}};
+  for (const double rate : rates) {
+    const std::string hz = std::to_string(static_cast<int>(std::lround(rate)));
+    t.columns.push_back({"error_m_" + hz + "_hz", "error [mm] " + hz + " Hz"});
+  }
+  t.columns.push_back({"turn_deg", "turn [deg]"});
+  // Rows in the order measured; one per law, shape and support.
+  std::vector<std::tuple<std::string, std::string, std::string>> keys;
+  std::map<std::tuple<std::string, std::string, std::string>, std::vector<const LawPoint*>> byKey;
+  for (const LawPoint& p : points) {
+    const auto key = std::make_tuple(p.law, p.shape, p.support);
+    if (byKey.find(key) == byKey.end()) keys.push_back(key);
+    byKey[key].push_back(&p);
+  }
+  for (const auto& key : keys) {
+    const auto& [law, shape, support] = key;
+    std::vector<ResultTable::Cell> row = {cell(law), cell(shape), cell(support)};
+    double turn = 0;
+    for (const double rate : rates) {
+      const auto& measured = byKey[key];
+      const auto found = std::find_if(measured.begin(), measured.end(), [&](const LawPoint* p) { return p->rate == rate; });
+      if (found == measured.end()) {
+        row.push_back(cell(nullptr, ""));
+        continue;
+      }
+      row.push_back(cell(nlohmann::json((*found)->worstError), ResultTable::Cell(cell((*found)->worstError * 1000.0, 4)).shown));
+      turn = std::max(turn, (*found)->worstTurn);
+    }
+    row.push_back(shape.rfind("sphere", 0) == 0 ? cell(nullptr, "-") : cell(turn, 3));
+    t.rows.push_back(std::move(row));
+  }
+  return t;
+}
+
+}  // namespace tabletop

@@ -1,0 +1,33 @@
+#pragma once
+
+#include <vector>
+
+#include "io/ResultTable.h"
+#include "measure/BenchRuns.h"
+#include "scenes/PushScene.h"
+
+namespace tabletop {
+
+/// The laws every shape on every support must follow, each against its
+/// closed form computed here (bench --laws; tests/sim/SlideTest.cpp holds
+/// the same laws to their tolerances):
+///  - slide: a cube, a box, cylinders and a cone given v0 = 1.6 m/s
+///    (mu 0.25) travel d = v0^2 / (2 mu g) without turning;
+///  - roll: spheres (rf 2 mm) given v0 = 0.4 m/s slip, then roll, to
+///    rollingDistance();
+///  - step: every shape pushed by a 0.2 m step travels it.
+/// Each on the table, the floor and a slab resting on the floor, pushed at
+/// 0, 45, 77 and 200 degrees.
+struct LawPoint {
+  std::string law, shape, support;
+  double rate = 0;         ///< Hz
+  double worstError = 0;   ///< m, over the push angles
+  double worstTurn = 0;    ///< degrees, over the push angles (not for spheres)
+};
+
+std::vector<LawPoint> measureLaws(const std::vector<double>& rates, const MeasureHooks& hooks);
+
+/// One row per law, shape and support, the worst error at each rate.
+ResultTable lawTable(const std::vector<LawPoint>& points);
+
+}  // namespace tabletop

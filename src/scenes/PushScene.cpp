@@ -1,0 +1,48 @@
+#include "scenes/PushScene.h"
+
+#include <cmath>
+#include <sstream>
+#include <utility>
+
+#include "core/Angle.h"
+#include "scenario/ScenarioLoader.h"
+
+namespace tabletop {
+
+std::pair<double, double> pushStart(const PushCase& c) {
+  if (c.support == "table") return {-0.3 * std::cos(convertAngle(c.angle)), 0.3 * std::sin(convertAngle(c.angle))};
+  return {3.0, 0.0};
+}
+
+Scenario pushScene(const PushCase& c) {
+  const auto [x0, z0] = pushStart(c);
+  const bool slab = c.support == "slab";
+  std::ostringstream text;
+  text.precision(17);
+  text << R"({"version": 1, "name": "push", "table": {"size": [2.0, 2.0], "material": {"friction": 1}},
+    "ground": {"material": {"friction": 1}}, "settings": {"timestep": )"
+       << 1.0 / c.rate << R"(, "duration": 3}, "entities": [)";
+  if (slab) {
+    text << R"({"name": "Base", "shape": "box", "size": [1.6, 0.1, 1.6], "position": [3, 0], "on": "ground",
+      "mass": 100, "material": {"friction": 1}}, )";
+  }
+  text << R"({"name": "A", "shape": ")" << c.shape << R"(", "size": )" << c.size << R"(, "position": [)" << x0
+       << ", " << z0 << R"(], "on": ")" << (slab ? "Base" : c.support) << R"(", "mass": )" << kPushedMass
+       << R"(, "material": {"friction": )" << c.friction << R"(, "rolling_friction": )" << c.rollingFriction
+       << R"(}}], "script": [{"push": {"entity": "A", "angle": )" << c.angle << ", ";
+  if (c.step > 0) {
+    text << R"("step": )" << c.step;
+  } else {
+    text << R"("impulse": )" << c.impulse;
+  }
+  text << "}}]}";
+  return ScenarioLoader::loadText(text.str(), "push.json");
+}
+
+std::string describe(const PushCase& c) {
+  std::ostringstream s;
+  s << c.shape << " " << c.size << " on the " << c.support << ", at " << c.angle << " deg, " << c.rate << " Hz";
+  return s.str();
+}
+
+}  // namespace tabletop
