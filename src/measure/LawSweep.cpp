@@ -6,6 +6,7 @@
 #include <string>
 #include <tuple>
 
+#include "core/Simulation.h"
 #include "physics/StepPush.h"
 #include "sim/SceneBuilder.h"
 #include "sim/ScriptRunner.h"
@@ -17,14 +18,22 @@ struct ShapeSize {
   const char* shape;
   const char* size;
   double radius;  // a sphere's, m
+  double below;   // m, its centre of mass above its lowest point, standing
 };
 
-const ShapeSize kSolids[] = {{"cube", "0.1", 0},
-                             {"box", "[0.2, 0.05, 0.12]", 0},
-                             {"cylinder", "[0.05, 0.05, 0.1]", 0},
-                             {"cylinder", "[0.08, 0.08, 0.03]", 0},
-                             {"cylinder", "[0.05, 0.03, 0.1]", 0}};
-const ShapeSize kSpheres[] = {{"sphere", "0.05", 0.05}, {"sphere", "0.1", 0.1}};
+// A truncated cone's centre of mass above its base (radius R, the other r,
+// height h): h (R^2 + 2 R r + 3 r^2) / (4 (R^2 + R r + r^2)).
+constexpr double frustumCentroid(double base, double top, double h) {
+  return h * (base * base + 2 * base * top + 3 * top * top) / (4 * (base * base + base * top + top * top));
+}
+
+const ShapeSize kSolids[] = {{"cube", "0.1", 0, 0.05},
+                             {"box", "[0.2, 0.05, 0.12]", 0, 0.025},
+                             {"cylinder", "[0.05, 0.05, 0.1]", 0, 0.05},
+                             {"cylinder", "[0.08, 0.08, 0.03]", 0, 0.015},
+                             {"cylinder", "[0.05, 0.03, 0.1]", 0, frustumCentroid(0.05, 0.03, 0.1)}};
+const ShapeSize kSpheres[] = {{"sphere", "0.05", 0.05, 0.05}, {"sphere", "0.1", 0.1, 0.1}};
+const double kRestitutions[] = {0.0, 0.5, 0.9};
 const char* const kSupports[] = {"table", "ground", "slab"};
 const double kAngles[] = {0.0, 45.0, 77.0, 200.0};
 
@@ -61,6 +70,32 @@ LawPoint measure(const std::string& law, const ShapeSize& shape, const char* sup
   return point;
 }
 
+// A drop from kDropHeight: free fall, then at t0 = sqrt(2 h / g) a rebound
+// at e v, v = g t0, followed until just before the second landing (0.3 s
+// past the first at e = 0); the worst error of the centre's height.
+LawPoint measureBounce(const ShapeSize& shape, const char* support, double rate) {
+  LawPoint point{"bounce", std::string(shape.shape) + " " + shape.size, support, rate, 0.0, 0.0};
+  for (const double e : kRestitutions) {
+    const DropCase c{shape.shape, shape.size, shape.below, support, e, rate};
+    const Scenario s = dropScene(c);
+    const double g = s.settings.gravity, rest = dropTouchHeight(c);
+    const double t0 = std::sqrt(2.0 * kDropHeight / g), up = e * g * t0;
+    const double end = t0 + (up > 0 ? 0.98 * 2.0 * up / g : 0.3);
+    auto sim = buildSimulation(s, s.settings, SimulationMode::Bullet);
+    while (sim->time() + s.settings.timestep <= end) {
+      sim->step();
+      const double t = sim->time(), since = t - t0;
+      const double exact = t <= t0 ? rest + kDropHeight - 0.5 * g * t * t
+                           : up > 0 ? rest + up * since - 0.5 * g * since * since
+                                    : rest;
+      const EntityState body = sim->snapshot().back();
+      point.worstError = std::max(point.worstError, std::abs(body.position.y - exact));
+      if (shape.radius == 0) point.worstTurn = std::max(point.worstTurn, std::abs(body.yawDegrees));
+    }
+  }
+  return point;
+}
+
 }  // namespace
 
 std::vector<LawPoint> measureLaws(const std::vector<double>& rates, const MeasureHooks& hooks) {
@@ -69,13 +104,15 @@ std::vector<LawPoint> measureLaws(const std::vector<double>& rates, const Measur
   for (const ShapeSize& s : kSpheres) jobs.emplace_back("roll", &s);
   for (const ShapeSize& s : kSolids) jobs.emplace_back("step", &s);
   for (const ShapeSize& s : kSpheres) jobs.emplace_back("step", &s);
+  jobs.emplace_back("bounce", &kSpheres[0]);
+  for (const ShapeSize& s : kSolids) jobs.emplace_back("bounce", &s);
   hooks.start(static_cast<long>(jobs.size() * std::size(kSupports) * rates.size()));
   std::vector<LawPoint> points;
   for (const auto& [law, shape] : jobs) {
     for (const char* support : kSupports) {
       for (const double rate : rates) {
         if (hooks.stop()) return points;
-        points.push_back(measure(law, *shape, support, rate));
+        points.push_back(law == "bounce" ? measureBounce(*shape, support, rate) : measure(law, *shape, support, rate));
         hooks.advance(law + " " + shape->shape);
       }
     }
@@ -85,7 +122,9 @@ std::vector<LawPoint> measureLaws(const std::vector<double>& rates, const Measur
 
 ResultTable lawTable(const std::vector<LawPoint>& points) {
   ResultTable t;
-  t.title = "laws: the worst error over pushes at 0, 45, 77 and 200 degrees, against the closed form";
+  t.title =
+      "laws: the worst error against the closed form, over pushes at 0, 45, 77 and 200 degrees, or over drops at "
+      "e = 0, 0.5 and 0.9";
   std::vector<double> rates;
   for (const LawPoint& p : points) {
     if (std::find(rates.begin(), rates.end(), p.rate) == rates.end()) rates.push_back(p.rate);

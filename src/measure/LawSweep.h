@@ -4,7 +4,7 @@
 
 #include "io/ResultTable.h"
 #include "measure/BenchRuns.h"
-#include "scenes/PushScene.h"
+#include "scenes/LawScenes.h"
 
 namespace tabletop {
 
@@ -15,14 +15,17 @@ namespace tabletop {
 ///    (mu 0.25) travel d = v0^2 / (2 mu g) without turning;
 ///  - roll: spheres (rf 2 mm) given v0 = 0.4 m/s slip, then roll, to
 ///    rollingDistance();
-///  - step: every shape pushed by a 0.2 m step travels it.
+///  - step: every shape pushed by a 0.2 m step travels it;
+///  - bounce: a sphere, and every other shape landing flat, dropped 0.3 m
+///    with e = 0, 0.5 and 0.9, follows free fall and its rebound at e
+///    times the impact speed (tests/sim/RestitutionTest.cpp).
 /// Each on the table, the floor and a slab resting on the floor, pushed at
 /// 0, 45, 77 and 200 degrees.
 struct LawPoint {
   std::string law, shape, support;
   double rate = 0;         ///< Hz
-  double worstError = 0;   ///< m, over the push angles
-  double worstTurn = 0;    ///< degrees, over the push angles (not for spheres)
+  double worstError = 0;   ///< m, over the push angles or the drops
+  double worstTurn = 0;    ///< degrees, likewise (not for spheres)
 };
 
 std::vector<LawPoint> measureLaws(const std::vector<double>& rates, const MeasureHooks& hooks);

@@ -15,7 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "core/Simulation.h"
-#include "scenes/PushScene.h"
+#include "scenes/LawScenes.h"
 #include "sim/SceneBuilder.h"
 #include "sim/ScriptRunner.h"
 
@@ -42,7 +42,7 @@ struct Outcome {
   double yawDegrees;
 };
 
-// The pushed entity's scene (scenes/PushScene.h), run to its end.
+// The pushed entity's scene (scenes/LawScenes.h), run to its end.
 Outcome slide(const PushCase& c) {
   const Scenario s = pushScene(c);
   auto sim = buildSimulation(s, s.settings, SimulationMode::Bullet);

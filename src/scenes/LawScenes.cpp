@@ -1,4 +1,4 @@
-#include "scenes/PushScene.h"
+#include "scenes/LawScenes.h"
 
 #include <cmath>
 #include <sstream>
@@ -8,6 +8,15 @@
 #include "scenario/ScenarioLoader.h"
 
 namespace tabletop {
+namespace {
+
+// The slab on the floor, as a scene's first entity.
+constexpr const char* kSlab = R"({"name": "Base", "shape": "box", "size": [1.6, 0.1, 1.6], "position": [3, 0],
+  "on": "ground", "mass": 100, "material": {"friction": 1, "restitution": 1}}, )";
+constexpr double kSlabTop = 0.1;   // m
+constexpr double kTableTop = 0.75;  // m, the default table's
+
+}  // namespace
 
 std::pair<double, double> pushStart(const PushCase& c) {
   if (c.support == "table") return {-0.3 * std::cos(convertAngle(c.angle)), 0.3 * std::sin(convertAngle(c.angle))};
@@ -22,10 +31,7 @@ Scenario pushScene(const PushCase& c) {
   text << R"({"version": 1, "name": "push", "table": {"size": [2.0, 2.0], "material": {"friction": 1}},
     "ground": {"material": {"friction": 1}}, "settings": {"timestep": )"
        << 1.0 / c.rate << R"(, "duration": 3}, "entities": [)";
-  if (slab) {
-    text << R"({"name": "Base", "shape": "box", "size": [1.6, 0.1, 1.6], "position": [3, 0], "on": "ground",
-      "mass": 100, "material": {"friction": 1}}, )";
-  }
+  if (slab) text << kSlab;
   text << R"({"name": "A", "shape": ")" << c.shape << R"(", "size": )" << c.size << R"(, "position": [)" << x0
        << ", " << z0 << R"(], "on": ")" << (slab ? "Base" : c.support) << R"(", "mass": )" << kPushedMass
        << R"(, "material": {"friction": )" << c.friction << R"(, "rolling_friction": )" << c.rollingFriction
@@ -42,6 +48,30 @@ Scenario pushScene(const PushCase& c) {
 std::string describe(const PushCase& c) {
   std::ostringstream s;
   s << c.shape << " " << c.size << " on the " << c.support << ", at " << c.angle << " deg, " << c.rate << " Hz";
+  return s.str();
+}
+
+double dropTouchHeight(const DropCase& c) {
+  const double top = c.support == "table" ? kTableTop : c.support == "slab" ? kSlabTop : 0.0;
+  return top + c.below;
+}
+
+Scenario dropScene(const DropCase& c) {
+  std::ostringstream text;
+  text.precision(17);
+  text << R"({"version": 1, "name": "drop", "ground": {"material": {"restitution": 1}},
+    "table": {"material": {"restitution": 1}}, "settings": {"timestep": )"
+       << 1.0 / c.rate << R"(, "duration": 1.2, "end_at_rest": false}, "entities": [)";
+  if (c.support == "slab") text << kSlab;
+  text << R"({"name": "A", "shape": ")" << c.shape << R"(", "size": )" << c.size << R"(, "position": [)"
+       << (c.support == "table" ? 0.0 : 3.0) << ", " << dropTouchHeight(c) + kDropHeight
+       << R"(, 0.0], "mass": 1.0, "material": {"restitution": )" << c.restitution << "}}]}";
+  return ScenarioLoader::loadText(text.str(), "drop.json");
+}
+
+std::string describe(const DropCase& c) {
+  std::ostringstream s;
+  s << c.shape << " " << c.size << " on the " << c.support << ", e " << c.restitution << ", " << c.rate << " Hz";
   return s.str();
 }
 

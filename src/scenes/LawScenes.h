@@ -7,8 +7,13 @@
 
 namespace tabletop {
 
+/// The scenes of the laws every shape on every support must follow
+/// (tests/sim/SlideTest and RestitutionTest, bench --laws). The supports:
+/// "table", "ground" and "slab", a 100 kg box 1.6 x 0.1 x 1.6 m resting on
+/// the floor 3 m from the table's centre (floor friction 1).
+
 /// One entity pushed across a support, the scene of the sliding, rolling
-/// and step laws (tests/sim/SlideTest, bench --laws): 1.5 kg, pushed at a
+/// and step laws: 1.5 kg, pushed at a
 /// world angle from the table's centre (0.3 m back from it), or 3 m from
 /// it on the floor or on a 100 kg slab resting there, towards open space.
 /// The slab (1.6 x 0.1 x 1.6 m, floor friction 1) is held by the floor
@@ -36,5 +41,28 @@ std::pair<double, double> pushStart(const PushCase& c);
 
 /// "cube 0.1 on the table, at 30 deg, 60 Hz".
 std::string describe(const PushCase& c);
+
+/// One 1 kg entity dropped from kDropHeight above its support, upright,
+/// the scene of the bouncing law: on the table at its centre, on the floor
+/// 3 m from it, or on the slab there. Every support's restitution is 1, so
+/// the entity's own is the contact's.
+struct DropCase {
+  std::string shape;       ///< scenario "shape"
+  std::string size;        ///< scenario "size", as JSON
+  double below = 0;        ///< m, its centre of mass above its lowest point
+  std::string support;     ///< "table", "ground" or "slab"
+  double restitution = 0;
+  double rate = 60;        ///< Hz
+};
+
+inline constexpr double kDropHeight = 0.3;  ///< m, from touch
+
+/// The scene, the dropped entity last (named "A"), for 1.2 s.
+Scenario dropScene(const DropCase& c);
+
+/// The height of the dropped entity's centre when it touches its support, m.
+double dropTouchHeight(const DropCase& c);
+
+std::string describe(const DropCase& c);
 
 }  // namespace tabletop
