@@ -70,24 +70,18 @@ LawPoint measure(const std::string& law, const ShapeSize& shape, const char* sup
   return point;
 }
 
-// A drop from kDropHeight: free fall, then at t0 = sqrt(2 h / g) a rebound
-// at e v, v = g t0, followed until just before the second landing (0.3 s
-// past the first at e = 0); the worst error of the centre's height.
+// A drop from kDropHeight against dropHeight(), followed until dropEnd():
+// the worst error of the centre's height.
 LawPoint measureBounce(const ShapeSize& shape, const char* support, double rate) {
   LawPoint point{"bounce", std::string(shape.shape) + " " + shape.size, support, rate, 0.0, 0.0};
   for (const double e : kRestitutions) {
     const DropCase c{shape.shape, shape.size, shape.below, support, e, rate};
     const Scenario s = dropScene(c);
-    const double g = s.settings.gravity, rest = dropTouchHeight(c);
-    const double t0 = std::sqrt(2.0 * kDropHeight / g), up = e * g * t0;
-    const double end = t0 + (up > 0 ? 0.98 * 2.0 * up / g : 0.3);
+    const double g = s.settings.gravity, end = dropEnd(c, g);
     auto sim = buildSimulation(s, s.settings, SimulationMode::Bullet);
     while (sim->time() + s.settings.timestep <= end) {
       sim->step();
-      const double t = sim->time(), since = t - t0;
-      const double exact = t <= t0 ? rest + kDropHeight - 0.5 * g * t * t
-                           : up > 0 ? rest + up * since - 0.5 * g * since * since
-                                    : rest;
+      const double exact = dropHeight(c, g, sim->time());
       const EntityState body = sim->snapshot().back();
       point.worstError = std::max(point.worstError, std::abs(body.position.y - exact));
       if (shape.radius == 0) point.worstTurn = std::max(point.worstTurn, std::abs(body.yawDegrees));

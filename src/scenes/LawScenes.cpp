@@ -56,6 +56,18 @@ double dropTouchHeight(const DropCase& c) {
   return top + c.below;
 }
 
+double dropHeight(const DropCase& c, double gravity, double t) {
+  const double rest = dropTouchHeight(c), t0 = std::sqrt(2.0 * kDropHeight / gravity);
+  if (t <= t0) return rest + kDropHeight - 0.5 * gravity * t * t;
+  const double up = c.restitution * gravity * t0, since = t - t0;
+  return up > 0 ? rest + up * since - 0.5 * gravity * since * since : rest;
+}
+
+double dropEnd(const DropCase& c, double gravity) {
+  const double t0 = std::sqrt(2.0 * kDropHeight / gravity), up = c.restitution * gravity * t0;
+  return t0 + (up > 0 ? 0.98 * 2.0 * up / gravity : 0.3);
+}
+
 Scenario dropScene(const DropCase& c) {
   std::ostringstream text;
   text.precision(17);

@@ -63,6 +63,15 @@ Scenario dropScene(const DropCase& c);
 /// The height of the dropped entity's centre when it touches its support, m.
 double dropTouchHeight(const DropCase& c);
 
+/// The closed form of the drop, the centre's height at time t (s): free
+/// fall until t0 = sqrt(2 h / g), then a rise at e v, v = g t0, until it
+/// lands again at t0 + 2 e v / g (at rest on the support when e = 0).
+double dropHeight(const DropCase& c, double gravity, double t);
+
+/// When the closed form stops holding: just before the second landing
+/// (98% of the flight), or 0.3 s past the first when e = 0.
+double dropEnd(const DropCase& c, double gravity);
+
 std::string describe(const DropCase& c);
 
 }  // namespace tabletop

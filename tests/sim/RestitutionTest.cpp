@@ -37,20 +37,13 @@ TEST_P(Restitution, ReboundsWithETimesTheImpactSpeed) {
   const Scenario s = dropScene(c);
   std::unique_ptr<Simulation> sim = buildSimulation(s, s.settings, SimulationMode::Bullet);
   const std::size_t a = s.entities.size() - 1;
-  const double rest = dropTouchHeight(c);  // the centre's height at touch
-  const double t0 = std::sqrt(2.0 * kDropHeight / kG), v = kG * t0, up = c.restitution * v;
-  // Until just before the next landing (or 0.3 s past the first for e = 0).
-  const double end = t0 + (up > 0 ? 0.98 * 2.0 * up / kG : 0.3);
   // No step adds energy: m g y + m v^2 / 2 (the body lands flat and does
   // not turn) never rises above its start, to 1e-9 of it.
-  const double start = kG * (rest + kDropHeight);
+  const double start = kG * (dropTouchHeight(c) + kDropHeight);
   double worst = 0.0, worstAt = 0.0, gain = 0.0;
-  while (sim->time() + s.settings.timestep <= end) {
+  while (sim->time() + s.settings.timestep <= dropEnd(c, kG)) {
     sim->step();
-    const double t = sim->time(), since = t - t0;
-    const double exact = t <= t0 ? rest + kDropHeight - 0.5 * kG * t * t
-                         : up > 0 ? rest + up * since - 0.5 * kG * since * since
-                                  : rest;
+    const double t = sim->time(), exact = dropHeight(c, kG, t);
     const EntityState body = sim->snapshot()[a];
     const double error = std::abs(body.position.y - exact);
     if (error > worst) worst = error, worstAt = t;
