@@ -6,6 +6,7 @@
 #include <string>
 #include <tuple>
 
+#include "core/ShapeGeometry.h"
 #include "core/Simulation.h"
 #include "physics/StepPush.h"
 #include "sim/SceneBuilder.h"
@@ -21,17 +22,11 @@ struct ShapeSize {
   double below;   // m, its centre of mass above its lowest point, standing
 };
 
-// A truncated cone's centre of mass above its base (radius R, the other r,
-// height h): h (R^2 + 2 R r + 3 r^2) / (4 (R^2 + R r + r^2)).
-constexpr double frustumCentroid(double base, double top, double h) {
-  return h * (base * base + 2 * base * top + 3 * top * top) / (4 * (base * base + base * top + top * top));
-}
-
 const ShapeSize kSolids[] = {{"cube", "0.1", 0, 0.05},
                              {"box", "[0.2, 0.05, 0.12]", 0, 0.025},
                              {"cylinder", "[0.05, 0.05, 0.1]", 0, 0.05},
                              {"cylinder", "[0.08, 0.08, 0.03]", 0, 0.015},
-                             {"cylinder", "[0.05, 0.03, 0.1]", 0, frustumCentroid(0.05, 0.03, 0.1)}};
+                             {"cylinder", "[0.05, 0.03, 0.1]", 0, ShapeGeometry::cylinder(0.05, 0.03, 0.1).below()}};
 const ShapeSize kSpheres[] = {{"sphere", "0.05", 0.05, 0.05}, {"sphere", "0.1", 0.1, 0.1}};
 const double kRestitutions[] = {0.0, 0.5, 0.9};
 const char* const kSupports[] = {"table", "ground", "slab"};
