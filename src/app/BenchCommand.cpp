@@ -113,6 +113,8 @@ void addBenchOptions(CLI::App& command, BenchOptions& options) {
   command.add_flag("--hard", options.hard,
                    "Run each hard case (SCENARIOS/hard) once at its own settings: cost, drift, penetration, "
                    "speed at rest, energy gain");
+  command.add_flag("--baseline", options.baseline,
+                   "Time each scene at each of --rates against the same scene in Bullet's own default pipeline");
   command.add_flag("--laws", options.laws,
                    "Hold every shape on the table, the floor and a slab to the sliding, rolling and step laws, "
                    "pushed at four angles, at each of --rates: the worst error against the closed form");
@@ -155,7 +157,8 @@ int runBench(const BenchOptions& asked, std::ostream& out, std::ostream& err) {
   }
 
   const bool sweepAsked =
-      options.sweep || (!options.switches && options.scale.empty() && !options.hard && !options.laws);
+      options.sweep ||
+      (!options.switches && options.scale.empty() && !options.hard && !options.laws && !options.baseline);
   const SweepGrid grid{options.rates, options.iterations, options.integrators};
   const InterruptGuard interrupt;
   std::vector<BenchPoint> points;
@@ -186,6 +189,11 @@ int runBench(const BenchOptions& asked, std::ostream& out, std::ostream& err) {
     }
   }
 
+  std::vector<BaselinePoint> baselinePoints;
+  if (options.baseline && !interrupt.requested()) {
+    Progress progress(err);
+    baselinePoints = measureBaseline(scenes, options.rates, options.repeats, hooks(interrupt, progress));
+  }
   std::vector<LawPoint> lawPoints;
   if (options.laws && !interrupt.requested()) {
     Progress progress(err);
@@ -195,6 +203,7 @@ int runBench(const BenchOptions& asked, std::ostream& out, std::ostream& err) {
   if (options.json) {
     out << nlohmann::json{{"sweep", toJson(sweepTable(points))},
                           {"laws", toJson(lawTable(lawPoints))},
+                          {"baseline", toJson(baselineTable(baselinePoints))},
                           {"switches", toJson(switchTable(switchPoints))},
                           {"scale", toJson(scaleTable(scalePoints))},
                           {"growth_exponents", exponents(scalePoints)},
@@ -223,6 +232,10 @@ int runBench(const BenchOptions& asked, std::ostream& out, std::ostream& err) {
       out << gap << toText(hardTable(hardPoints));
       gap = "\n";
     }
+    if (!baselinePoints.empty()) {
+      out << gap << toText(baselineTable(baselinePoints));
+      gap = "\n";
+    }
     if (!lawPoints.empty()) out << gap << toText(lawTable(lawPoints));
   }
   int status = kExitOk;
@@ -241,7 +254,8 @@ int runBench(const BenchOptions& asked, std::ostream& out, std::ostream& err) {
         {"switches.csv", switchTable(switchPoints)},
         {"scale.csv", scaleTable(scalePoints)},
         {"hard.csv", hardTable(hardPoints)},
-        {"laws.csv", lawTable(lawPoints)}};
+        {"laws.csv", lawTable(lawPoints)},
+        {"baseline.csv", baselineTable(baselinePoints)}};
     for (const auto& [file, table] : sections) {
       if (problem.empty() && !table.rows.empty()) problem = AtomicFile::write((dir / file).string(), toCsv(table));
     }

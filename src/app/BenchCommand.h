@@ -37,6 +37,7 @@ struct BenchOptions {
   std::vector<int> scale;
   bool hard = false;  ///< --hard: run every scene in SCENARIOS/hard once and measure its stability
   bool laws = false;  ///< --laws: the sliding, rolling and step laws over shapes, supports and angles
+  bool baseline = false;  ///< --baseline: each scene's cost against Bullet's own default pipeline
 };
 
 /// Declares bench's options on `command`.

@@ -85,6 +85,23 @@ ResultTable switchTable(const std::vector<SwitchPoint>& points) {
   return t;
 }
 
+ResultTable baselineTable(const std::vector<BaselinePoint>& points) {
+  ResultTable t;
+  t.title = "Against Bullet's own default pipeline (the same scene and rate, as long as tabletop's run; its "
+            "defaults otherwise: 10 iterations, warm start 0.85, Euler)";
+  t.columns = {{"scene", "scene"},
+               {"rate_hz", "rate [Hz]"},
+               {"tabletop_ms_per_s", "tabletop [ms/s]"},
+               {"bullet_ms_per_s", "Bullet [ms/s]"},
+               {"ratio", "ratio"},
+               {"simulated_s", "simulated [s]"}};
+  for (const BaselinePoint& p : points) {
+    t.rows.push_back({cell(p.scene), cell(p.rate, 0), cell(p.tabletopMs, 3), cell(p.bulletMs, 3),
+                      cell(p.tabletopMs / p.bulletMs, 2), cell(p.simulated, 3)});
+  }
+  return t;
+}
+
 ResultTable scaleTable(const std::vector<ScalePoint>& points) {
   ResultTable t;
   const Scenario any = CubeField::make(1);

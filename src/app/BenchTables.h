@@ -26,6 +26,9 @@ ResultTable scaleTable(const std::vector<ScalePoint>& points);
 /// The hard cases, each run once.
 ResultTable hardTable(const std::vector<HardPoint>& points);
 
+/// Each scene's cost at each rate against Bullet's own default pipeline.
+ResultTable baselineTable(const std::vector<BaselinePoint>& points);
+
 /// A gnuplot script: error [mm] against cost [ms per simulated second] of
 /// one scene, log-log, one curve per family (mode, or integrator and
 /// iterations in full physics), the front circled.

@@ -1,4 +1,5 @@
 #include "measure/BenchRuns.h"
+#include "measure/PlainBullet.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -118,6 +119,25 @@ std::vector<BenchPoint> measureSweep(std::vector<BenchScene>& scenes, const Swee
       points.push_back(p);
       hooks.advance(scene->name() + " " + std::string(toString(mode)) + " " + fixed(1.0 / settings.timestep, 0) +
                     " Hz");
+    }
+  }
+  return points;
+}
+
+std::vector<BaselinePoint> measureBaseline(std::vector<BenchScene>& scenes, const std::vector<double>& rates,
+                                           int repeats, const MeasureHooks& hooks) {
+  hooks.start(static_cast<long>(scenes.size() * rates.size()));
+  std::vector<BaselinePoint> points;
+  for (BenchScene& scene : scenes) {
+    for (const double rate : rates) {
+      if (hooks.stop()) return points;
+      Settings settings = scene.scenario().settings;
+      settings.timestep = 1.0 / rate;
+      const Timed t = timed(repeats, true, settings.timestep, [&] { return scene.measure(settings); });
+      const double simulated = std::max(t.last.simSeconds, settings.timestep);
+      const PlainRun plain = runPlainBullet(scene.scenario(), settings.timestep, simulated, repeats);
+      points.push_back({scene.name(), rate, t.costMs, plain.costMsPerSecond, simulated});
+      hooks.advance(scene.name());
     }
   }
   return points;

@@ -49,6 +49,20 @@ std::vector<ScalePoint> measureScale(const std::vector<int>& sizes, int repeats,
 /// The growth exponent of each switch's time per step over the sizes.
 std::map<std::string, double> exponents(const std::vector<ScalePoint>& points);
 
+/// A scene at one rate, at its own settings otherwise, against the same
+/// scene in Bullet's own default pipeline (PlainBullet) for as long as
+/// tabletop's run simulated.
+struct BaselinePoint {
+  std::string scene;
+  double rate = 0;           ///< Hz
+  double tabletopMs = 0;     ///< median wall ms per simulated second
+  double bulletMs = 0;       ///< likewise, Bullet's own pipeline
+  double simulated = 0;      ///< s
+};
+
+std::vector<BaselinePoint> measureBaseline(std::vector<BenchScene>& scenes, const std::vector<double>& rates,
+                                           int repeats, const MeasureHooks& hooks);
+
 /// One hard case, run once (docs/hard-cases.md).
 struct HardPoint {
   std::string scene;

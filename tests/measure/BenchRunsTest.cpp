@@ -38,5 +38,20 @@ TEST(BenchRuns, SweepsTheGridAndStopsWhenAsked) {
   EXPECT_TRUE(measureSweep(scenes, grid, {SimulationMode::Bullet}, 1, hooks, skipped).empty());
 }
 
+// The baseline times the scene both ways over tabletop's own run (free
+// flight never rests: its whole 0.4 s), a point per scene and rate.
+TEST(BenchRuns, TimesEachSceneAgainstBulletsOwnPipeline) {
+  std::vector<BenchScene> scenes;
+  scenes.emplace_back(ScenarioLoader::loadFile(std::string(TABLETOP_SOURCE_DIR) + "/scenarios/analytic/free_flight.json"));
+  const auto points = measureBaseline(scenes, {60.0, 240.0}, 1, MeasureHooks{});
+  ASSERT_EQ(points.size(), 2u);
+  for (const BaselinePoint& p : points) {
+    EXPECT_EQ(p.scene, "free_flight");
+    EXPECT_NEAR(p.simulated, 0.4, 1.0 / p.rate) << p.rate;
+    EXPECT_GT(p.tabletopMs, 0.0);
+    EXPECT_GT(p.bulletMs, 0.0);
+  }
+}
+
 }  // namespace
 }  // namespace tabletop
