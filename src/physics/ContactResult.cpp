@@ -1,6 +1,7 @@
 #include "physics/ContactResult.h"
 
 #include <algorithm>
+#include <functional>
 
 namespace tabletop {
 namespace {
@@ -103,6 +104,16 @@ void ContactResult::addContactPoint(const btVector3& normalOnBInWorld, const btV
   }
 }
 
+// Orders saved points by their manifold, and finds a manifold's.
+struct CarriedImpulses::Before {
+  bool operator()(const Saved& s, const btPersistentManifold* m) const {
+    return std::less<const btPersistentManifold*>()(s.manifold, m);
+  }
+  bool operator()(const btPersistentManifold* m, const Saved& s) const {
+    return std::less<const btPersistentManifold*>()(m, s.manifold);
+  }
+};
+
 void CarriedImpulses::save(btDispatcher& dispatcher) {
   saved_.clear();
   for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
@@ -117,6 +128,10 @@ void CarriedImpulses::save(btDispatcher& dispatcher) {
                         point.getLifeTime()});
     }
   }
+  // By manifold, so that restore() finds a manifold's points by a search.
+  std::stable_sort(saved_.begin(), saved_.end(), [](const Saved& a, const Saved& b) {
+    return std::less<const btPersistentManifold*>()(a.manifold, b.manifold);
+  });
 }
 
 void CarriedImpulses::restore(btDispatcher& dispatcher) {
@@ -124,15 +139,16 @@ void CarriedImpulses::restore(btDispatcher& dispatcher) {
   for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
     btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
     std::vector<Saved*> gone;
-    for (Saved& s : saved_) {
-      if (s.manifold != manifold || s.body0 != manifold->getBody0() || s.body1 != manifold->getBody1()) continue;
+    const auto [first, last] = std::equal_range(saved_.begin(), saved_.end(), manifold, Before{});
+    for (auto s = first; s != last; ++s) {
+      if (s->body0 != manifold->getBody0() || s->body1 != manifold->getBody1()) continue;
       bool kept = false;  // a kept or replaced point keeps its impulses exactly
       for (int p = 0; p < manifold->getNumContacts() && !kept; ++p) {
         const btManifoldPoint& point = manifold->getContactPoint(p);
-        kept = point.m_appliedImpulse == s.impulse && point.m_appliedImpulseLateral1 == s.lateral1 &&
-               point.m_appliedImpulseLateral2 == s.lateral2;
+        kept = point.m_appliedImpulse == s->impulse && point.m_appliedImpulseLateral1 == s->lateral1 &&
+               point.m_appliedImpulseLateral2 == s->lateral2;
       }
-      if (!kept) gone.push_back(&s);
+      if (!kept) gone.push_back(&*s);
     }
     if (gone.empty()) continue;
     const double radius =

@@ -60,7 +60,8 @@ class CarriedImpulses {
     btScalar impulse, lateral1, lateral2;
     int lifeTime;
   };
-  std::vector<Saved> saved_;
+  struct Before;
+  std::vector<Saved> saved_;  // by manifold
 };
 
 /// Removes the points of `manifold` that no longer mark where its bodies
