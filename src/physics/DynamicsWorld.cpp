@@ -153,7 +153,7 @@ void DynamicsWorld::applyRollingResistance() {
       btVector3 part;
       double coefficient;
       bool aboutContact;
-    } parts[] = {{spin - spinning, contact.rollingFriction, true},
+    } parts[] = {{spin - normal * normal.dot(spin), contact.rollingFriction, true},
                  {spinning, contact.spinningFriction, false}};
     for (const auto& part : parts) {
       const btScalar rate = part.part.length();
