@@ -41,15 +41,7 @@ void FaceVertices::processCollision(const btCollisionObjectWrapper* body0, const
   // tried first, so the roles stay put from step to step.
   const bool box0 = body0->getCollisionShape()->getShapeType() == BOX_SHAPE_PROXYTYPE;
   const bool box1 = body1->getCollisionShape()->getShapeType() == BOX_SHAPE_PROXYTYPE;
-  int solid = -1;
-  if (box0 && touchFace(body0, body1, true, result)) {
-    solid = 1;
-  } else if (box1 && touchFace(body1, body0, false, result)) {
-    solid = 0;
-  }
-  if (solid >= 0) {
-    if (solid != solid_) choice_.forget();  // the kept corners were the other body's
-    solid_ = solid;
+  if ((box0 && touchFace(body0, body1, true, result)) || (box1 && touchFace(body1, body0, false, result))) {
     clearOtherwise();
     return;
   }
@@ -98,6 +90,9 @@ bool FaceVertices::touchFace(const btCollisionObjectWrapper* boxWrap, const btCo
     }
   }
   result->setPersistentManifold(manifold_);
+  const int solidBody = boxFirst ? 1 : 0;
+  if (solidBody != solid_) choice_.forget();  // the kept corners were the other body's
+  solid_ = solidBody;
   if (near.empty()) {
     choice_.forget();
   } else {
