@@ -232,8 +232,15 @@ int runBench(const BenchOptions& asked, std::ostream& out, std::ostream& err) {
       out << gap << toText(hardTable(hardPoints));
       gap = "\n";
     }
-    if (!baselinePoints.empty()) {
-      out << gap << toText(baselineTable(baselinePoints));
+    if (options.baseline) {
+      ResultTable t = baselineTable(baselinePoints);
+      for (const BenchScene& scene : scenes) {
+        const auto measured = [&](const BaselinePoint& p) { return p.scene == scene.name(); };
+        if (std::none_of(baselinePoints.begin(), baselinePoints.end(), measured)) {
+          t.notes.push_back("(" + scene.name() + ": not measured, full physics refuses the scene)");
+        }
+      }
+      out << gap << toText(t);
       gap = "\n";
     }
     if (!lawPoints.empty()) out << gap << toText(lawTable(lawPoints));

@@ -129,8 +129,15 @@ std::vector<BaselinePoint> measureBaseline(std::vector<BenchScene>& scenes, cons
   hooks.start(static_cast<long>(scenes.size() * rates.size()));
   std::vector<BaselinePoint> points;
   for (BenchScene& scene : scenes) {
+    // A scene full physics refuses (an overlap, a step that cannot be
+    // reached) has no cost to compare.
+    const bool refused = refusal(scene.scenario(), SimulationMode::Bullet).has_value();
     for (const double rate : rates) {
       if (hooks.stop()) return points;
+      if (refused) {
+        hooks.advance(scene.name());
+        continue;
+      }
       Settings settings = scene.scenario().settings;
       settings.timestep = 1.0 / rate;
       const Timed t = timed(repeats, true, settings.timestep, [&] { return scene.measure(settings); });

@@ -51,7 +51,7 @@ std::map<std::string, double> exponents(const std::vector<ScalePoint>& points);
 
 /// A scene at one rate, at its own settings otherwise, against the same
 /// scene in Bullet's own default pipeline (PlainBullet) for as long as
-/// tabletop's run simulated.
+/// tabletop's run simulated. A scene full physics refuses gets no point.
 struct BaselinePoint {
   std::string scene;
   double rate = 0;           ///< Hz
