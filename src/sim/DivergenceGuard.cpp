@@ -90,12 +90,14 @@ void DivergenceGuard::check(const std::vector<BodyMotion>& states, double time) 
     for (double q : s.orientation) {
       if (!std::isfinite(q)) fail("orientation", "orientation is not finite");
     }
-    std::ostringstream o;
+    // The message is built only on failure: this check runs every step.
     if (s.position.length() > kWorldRadius) {
+      std::ostringstream o;
       o << "position " << shown(s.position) << " m is beyond the world's radius of " << kWorldRadius << " m";
       fail("position", o.str());
     }
     if (i < radii_.size() && s.position.y < -radii_[i]) {
+      std::ostringstream o;
       o << "centre at y = " << s.position.y << " m is below the floor: the body has passed through it";
       fail("position", o.str());
     }
@@ -104,16 +106,19 @@ void DivergenceGuard::check(const std::vector<BodyMotion>& states, double time) 
     const TableSpec& t = table_;
     if (std::abs(s.position.x - t.centreX) < 0.5 * t.width && std::abs(s.position.z - t.centreZ) < 0.5 * t.depth &&
         s.position.y < t.height && s.position.y > t.height - t.thickness) {
+      std::ostringstream o;
       o << "centre at y = " << s.position.y << " m is inside the table top (" << t.height - t.thickness << " to "
         << t.height << " m): the body is passing through it";
       fail("position", o.str());
     }
     if (s.linearVelocity.length() > vMax) {
+      std::ostringstream o;
       o << "speed " << s.linearVelocity.length() << " m/s exceeds the scene's bound of " << vMax
         << " m/s (energy " << energy_ << " J)";
       fail("speed", o.str());
     }
     if (s.angularVelocity.length() > wMax) {
+      std::ostringstream o;
       o << "angular speed " << s.angularVelocity.length() << " rad/s exceeds the scene's bound of " << wMax
         << " rad/s (energy " << energy_ << " J)";
       fail("angular speed", o.str());
