@@ -5,9 +5,12 @@
 add_library(tabletop_options INTERFACE)
 add_library(Tabletop::options ALIAS tabletop_options)
 target_compile_features(tabletop_options INTERFACE cxx_std_17)
+# The warnings are the build's own; a project using the installed
+# libraries keeps its own (BUILD_INTERFACE).
 target_compile_options(tabletop_options INTERFACE
-  $<$<CXX_COMPILER_ID:GNU,Clang>:-Wall -Wextra -Wpedantic -Wshadow -ffp-contract=off>
-  $<$<AND:$<BOOL:${TABLETOP_WERROR}>,$<CXX_COMPILER_ID:GNU,Clang>>:-Werror>)
+  $<$<CXX_COMPILER_ID:GNU,Clang>:-ffp-contract=off>
+  $<BUILD_INTERFACE:$<$<CXX_COMPILER_ID:GNU,Clang>:-Wall -Wextra -Wpedantic -Wshadow>>
+  $<BUILD_INTERFACE:$<$<AND:$<BOOL:${TABLETOP_WERROR}>,$<CXX_COMPILER_ID:GNU,Clang>>:-Werror>>)
 
 # TABLETOP_SANITIZE: AddressSanitizer (with leak checking) and
 # UndefinedBehaviorSanitizer on every tabletop target; any report aborts the
@@ -20,5 +23,5 @@ if(TABLETOP_SANITIZE)
   target_link_options(tabletop_options INTERFACE ${tabletop_sanitizers})
   # The sanitizers' defaults and suppressions, in each executable.
   target_sources(tabletop_options INTERFACE
-    $<$<STREQUAL:$<TARGET_PROPERTY:TYPE>,EXECUTABLE>:${PROJECT_SOURCE_DIR}/cmake/SanitizerDefaults.cpp>)
+    $<BUILD_INTERFACE:$<$<STREQUAL:$<TARGET_PROPERTY:TYPE>,EXECUTABLE>:${PROJECT_SOURCE_DIR}/cmake/SanitizerDefaults.cpp>>)
 endif()

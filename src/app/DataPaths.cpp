@@ -30,7 +30,7 @@ std::string versionLine() {
   const char* precision = "single precision";
 #endif
   return std::string("tabletop ") + TABLETOP_VERSION + " (Bullet " + std::to_string(v / 100) + "." +
-         std::to_string(v % 100) + ", " + precision + ")";
+         std::to_string(v % 100) + ", " + precision + ")\ndata: " + dataRoot();
 }
 
 }  // namespace tabletop

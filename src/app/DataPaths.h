@@ -17,7 +17,8 @@ std::string shippedScenarios();
 /// dataRoot()/data/tolerance_front.json, which run --tolerance reads.
 std::string shippedFront();
 
-/// "tabletop 0.1.0 (Bullet 3.24, double precision)".
+/// "tabletop 0.1.0 (Bullet 3.24, double precision)", then on a line of its
+/// own "data: " and dataRoot(), the folder the program reads its files from.
 std::string versionLine();
 
 }  // namespace tabletop

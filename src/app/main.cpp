@@ -37,7 +37,7 @@ int main(int argc, char** argv) {
       "tabletop: the table-top scenes of S. Zou's report \"The Design of a 3D-Object Simulator\n"
       "Using Open-GL\" (Concordia, 2001) simulated with Bullet rigid-body physics."};
   app.require_subcommand(1);
-  app.set_version_flag("--version", versionLine(), "Print the version and the Bullet build (float or double), then exit");
+  app.set_version_flag("--version", versionLine(), "Print the version, the Bullet build (float or double) and where the shipped files are, then exit");
   int status = kExitOk;
 
   RunOptions run;

@@ -578,7 +578,7 @@ using namespace tabletop::testing;
 
 // The program finds its own files from where it is, not from the current
 // folder: --tolerance's front and bench's scenes, run from the root folder;
-// --version names the build.
+// --version names the build and where its files are.
 TEST(CommandLine, RunsFromAnyFolderAndSaysItsVersion) {
   Outcome o = run("cd / && " + kBin + "tabletop run " + kScenarios + "example3_stacked_cubes.json --tolerance 1e-3");
   EXPECT_EQ(o.status, 0) << o.err;
@@ -590,6 +590,8 @@ TEST(CommandLine, RunsFromAnyFolderAndSaysItsVersion) {
   EXPECT_EQ(o.status, 0) << o.err;
   EXPECT_EQ(o.out.rfind("tabletop 0.1.0 (Bullet ", 0), 0u) << o.out;
   EXPECT_NE(o.out.find(" precision)"), std::string::npos) << o.out;
+  // Built, not installed: its files are the source tree's.
+  EXPECT_NE(o.out.find(std::string("\ndata: ") + TABLETOP_SOURCE_DIR + "\n"), std::string::npos) << o.out;
 }
 
 }  // namespace

@@ -1,0 +1,42 @@
+# What `cmake --install` puts under a prefix, in the usual layout:
+#   bin/                  tabletop and the four example programs
+#   lib/                  the libraries (static)
+#   include/tabletop/     their headers, by layer (core/, physics/, sim/ ...)
+#   share/tabletop/       the shipped scenarios and the tolerance front,
+#                         found by the installed programs (app/DataPaths.h)
+#   lib/cmake/tabletop/   the CMake package: find_package(tabletop) gives
+#                         tabletop::core, tabletop::physics, tabletop::sim ...
+#                         with Bullet found for the consumer as the build
+#                         found it (float or double).
+include(CMakePackageConfigHelpers)
+
+# Every library but the command line's own, named without the prefix.
+set(TABLETOP_EXPORTED
+  options core io rules physics compat scenario sim scenes measure
+  draw image render headless session viewer)
+foreach(_name IN LISTS TABLETOP_EXPORTED)
+  set_target_properties(tabletop_${_name} PROPERTIES EXPORT_NAME ${_name})
+  list(APPEND _tabletop_targets tabletop_${_name})
+endforeach()
+
+install(TARGETS ${_tabletop_targets} EXPORT tabletopTargets
+  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/tabletop)
+
+# The headers keep the layer folders the sources include them by
+# ("physics/World.h"); the command line's are not a library's.
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/tabletop
+  FILES_MATCHING PATTERN "*.h"
+  PATTERN "app" EXCLUDE)
+
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/scenarios/ DESTINATION ${CMAKE_INSTALL_DATADIR}/tabletop/scenarios)
+install(FILES ${PROJECT_SOURCE_DIR}/data/tolerance_front.json DESTINATION ${CMAKE_INSTALL_DATADIR}/tabletop/data)
+
+set(TABLETOP_PACKAGE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/tabletop)
+install(EXPORT tabletopTargets NAMESPACE tabletop:: DESTINATION ${TABLETOP_PACKAGE_DIR})
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/tabletopConfig.cmake.in
+  ${PROJECT_BINARY_DIR}/tabletopConfig.cmake INSTALL_DESTINATION ${TABLETOP_PACKAGE_DIR})
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/tabletopConfigVersion.cmake
+  COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/tabletopConfig.cmake ${PROJECT_BINARY_DIR}/tabletopConfigVersion.cmake
+  ${PROJECT_SOURCE_DIR}/cmake/TabletopBullet.cmake DESTINATION ${TABLETOP_PACKAGE_DIR})
