@@ -3,7 +3,8 @@
 # the installed tabletop, run from another folder, finds its own files
 # under PREFIX/share/tabletop (not the source tree); and the consumer
 # example (examples/consumer) is configured against the installed CMake
-# package, built, and run, its cube sliding the closed-form 0.1019 m.
+# package, built, and run, its cube sliding the closed-form 0.1019 m; the
+# installed Python module, if built, runs a scenario from the prefix.
 # Usage: check.sh SOURCE_DIR BUILD_DIR [CMAKE_BUILD_TYPE]
 set -euo pipefail
 source_dir=$1 build_dir=$2 build_type=${3:-Release}
@@ -35,4 +36,14 @@ cmake --build consumer > consumer-build.log || { cat consumer-build.log; exit 1;
 out=$(consumer/slide)
 echo "$out"
 grep -q "slid 0.1019 m (closed form 0.1019 m)" <<< "$out" || { echo "FAIL: the consumer's cube did not slide 0.1019 m"; exit 1; }
+grep -qxF "$out" "$source_dir/README.md" || { echo "FAIL: the README does not show the consumer's output as it runs"; exit 1; }
+# The Python module, where the build made one: imported from the prefix,
+# it runs a shipped scenario from the installed data.
+module=$(find "$prefix" -name 'tabletop*.so' -path '*python3*' | head -1)
+if [ -n "$module" ]; then
+  out=$(PYTHONPATH=$(dirname "$module") /usr/bin/python3 -c "import tabletop; \
+r = tabletop.run('$prefix/share/tabletop/scenarios/example1_single_cube.json'); print(r['state_hash'], r['complete'])")
+  echo "python: $out"
+  grep -q " True$" <<< "$out" || { echo "FAIL: the installed Python module did not run example 1"; exit 1; }
+fi
 echo "1 passed, 0 failed"
