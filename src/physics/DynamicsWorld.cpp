@@ -1,6 +1,8 @@
 #include "physics/DynamicsWorld.h"
 
 #include <algorithm>
+#include <cmath>
+#include <unordered_map>
 
 #include "core/Material.h"
 #include "physics/ContactMaterial.h"
@@ -214,8 +216,18 @@ void DynamicsWorld::integrateTransforms(btScalar) {
     const btVector3 change = body->getLinearVelocity() - startVelocities_[static_cast<std::size_t>(i)];
     if (change.length2() > limit * limit) continue;  // an impact: keep Bullet's update
     if (stopped_.count(body) > 0) continue;  // likewise
+    // Velocity changes linearly until a slip stops, then stays: the mean
+    // over the part is the end velocity less half the change times the
+    // share of the part spent slipping (1 unless the slip stopped in it).
+    // Only the change across the contact's normal comes from the slip.
+    btVector3 mean = change;
+    if (const auto slip = slipShare_.find(body); slip != slipShare_.end()) {
+      const btVector3& n = slip->second.normal;
+      const btVector3 across = change - n * change.dot(n);
+      mean = change - across * (1.0 - slip->second.share);
+    }
     btTransform pose = body->getWorldTransform();
-    pose.setOrigin(pose.getOrigin() - change * (timeStep / 2));
+    pose.setOrigin(pose.getOrigin() - mean * (timeStep / 2));
     body->proceedToTransform(pose);
   }
 }
@@ -280,6 +292,7 @@ void DynamicsWorld::solveConstraints(btContactSolverInfo& solverInfo) {
       if (speed > stopSpeed() && point.getDistance() <= speed * partLength_) closing.emplace_back(manifold, &point);
     }
   }
+  const std::vector<std::pair<const btPersistentManifold*, const btManifoldPoint*>> slipping = slippingPoints();
   if (secondOrder_) scan.holdMeanVelocity(partLength_, heldGaps_);
   btDiscreteDynamicsWorld::solveConstraints(solverInfo);
   solved_ = true;
@@ -288,6 +301,7 @@ void DynamicsWorld::solveConstraints(btContactSolverInfo& solverInfo) {
     if (!(point->getAppliedImpulse() > 0)) continue;
     stopped_.insert({manifold->getBody0(), manifold->getBody1()});
   }
+  findSlipStops(slipping);
   for (const auto& [point, impulses] : carried) {
     point->m_appliedImpulse = impulses.x();
     point->m_appliedImpulseLateral1 = impulses.y();
@@ -343,6 +357,65 @@ void DynamicsWorld::forgetImpacts() {
       point.m_contactPointFlags &= ~kImpactFlag;
     }
   }
+}
+
+// The points whose bodies slide over each other at the part's start, more
+// than a thousandth of what kinetic friction removes in the part: those
+// whose friction may stop the slip inside it.
+std::vector<std::pair<const btPersistentManifold*, const btManifoldPoint*>> DynamicsWorld::slippingPoints() {
+  std::vector<std::pair<const btPersistentManifold*, const btManifoldPoint*>> out;
+  if (!secondOrder_) return out;
+  const double g = getGravity().length();
+  btDispatcher* dispatcher = getDispatcher();
+  for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
+    const btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
+    for (int p = 0; p < manifold->getNumContacts(); ++p) {
+      const btManifoldPoint& point = manifold->getContactPoint(p);
+      if (slipSpeed(*manifold, point) > kSlipShare * point.m_combinedFriction * g * partLength_) {
+        out.emplace_back(manifold, &point);
+      }
+    }
+  }
+  return out;
+}
+
+// A body that slid through the part before and whose slipping points end
+// this solve holding less friction than they could (static friction: the slip stopped) slipped for the share of
+// the part that the friction used is of what kinetic friction gives, the
+// friction being constant while it slips.
+void DynamicsWorld::findSlipStops(
+    const std::vector<std::pair<const btPersistentManifold*, const btManifoldPoint*>>& slipping) {
+  slipShare_.clear();
+  struct Used {
+    double friction = 0, limit = 0;
+    btVector3 normal{0, 0, 0};  // the points' normals, by their loads, turned one way
+  };
+  std::unordered_map<const btCollisionObject*, Used> used;
+  for (const auto& [manifold, point] : slipping) {
+    const double friction = std::hypot(point->m_appliedImpulseLateral1, point->m_appliedImpulseLateral2);
+    const double limit = point->m_combinedFriction * point->m_appliedImpulse;
+    for (const btCollisionObject* body : {manifold->getBody0(), manifold->getBody1()}) {
+      if (body->isStaticOrKinematicObject()) continue;
+      Used& u = used[body];
+      u.friction += friction;
+      u.limit += limit;
+      const btVector3 n = point->m_normalWorldOnB * point->m_appliedImpulse;
+      u.normal += n.dot(u.normal) < 0 ? -n : n;
+    }
+  }
+  // Only a body that slid through the part before (its friction at its
+  // limit) stops in this one: a slip that starts in a part (a rolling
+  // body's, made by its rolling resistance) is not one that stops.
+  std::unordered_set<const btCollisionObject*> sliding;
+  for (const auto& [body, u] : used) {
+    if (!(u.limit > 0) || !(u.normal.length2() > 0)) continue;
+    if (u.friction >= (1.0 - kSlipShare) * u.limit) {
+      sliding.insert(body);
+    } else if (sliding_.count(body) > 0) {
+      slipShare_[body] = {u.friction / u.limit, u.normal.normalized()};
+    }
+  }
+  sliding_ = std::move(sliding);
 }
 
 }  // namespace tabletop

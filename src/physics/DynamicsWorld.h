@@ -1,5 +1,6 @@
 #pragma once
 
+#include <unordered_map>
 #include <unordered_set>
 #include <utility>
 #include <vector>
@@ -68,6 +69,11 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   void forgetImpacts();
   void resolveTouchingImpacts(btContactSolverInfo& solverInfo);
   void scaleCarriedImpulses(double ratio);
+  std::vector<std::pair<const btPersistentManifold*, const btManifoldPoint*>> slippingPoints();
+  void findSlipStops(const std::vector<std::pair<const btPersistentManifold*, const btManifoldPoint*>>& slipping);
+  // Slips slower than this share of what kinetic friction removes in a
+  // part are taken as stuck; friction this close to its limit as sliding.
+  static constexpr double kSlipShare = 1e-3;
   // The closing speed, m/s, above which a point that stops a body counts
   // as stopping it at once: a tenth of what smooth forces give in a step,
   // above a resting contact's rounding.
@@ -89,6 +95,14 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   std::vector<std::pair<btManifoldPoint*, btScalar>> heldGaps_;
   std::vector<btManifoldPoint*> bounced_;  // points bounced at the start of the part
   std::unordered_set<const btCollisionObject*> stopped_;  // bodies a closing point stopped in the last solve
+  // Bodies whose slip friction stopped inside the last solve's part: the
+  // share of the part they slipped for (integrateTransforms).
+  struct SlipStop {
+    double share = 1.0;  // of the part slipped for
+    btVector3 normal;    // of the contacts it slipped on, unit
+  };
+  std::unordered_map<const btCollisionObject*, SlipStop> slipShare_;
+  std::unordered_set<const btCollisionObject*> sliding_;  // bodies whose friction was at its limit in it
   std::vector<btVector3> startVelocities_;
   CarriedImpulses carried_;  // per non-static body, at the step's start
 };

@@ -33,6 +33,13 @@ double closingSpeed(const btPersistentManifold& manifold, const btManifoldPoint&
   return -relative.dot(point.m_normalWorldOnB);
 }
 
+double slipSpeed(const btPersistentManifold& manifold, const btManifoldPoint& point) {
+  const btVector3 relative = velocityAt(manifold.getBody0(), point.getPositionWorldOnA()) -
+                             velocityAt(manifold.getBody1(), point.getPositionWorldOnB());
+  const btVector3& n = point.m_normalWorldOnB;
+  return (relative - n * relative.dot(n)).length();
+}
+
 
 double timeToClose(double gap, double speed, double accel) {
   constexpr double kNever = std::numeric_limits<double>::infinity();

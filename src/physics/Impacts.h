@@ -38,6 +38,10 @@ inline constexpr double kBounceSpeed = 0.2;
 /// each other along its normal (negative when they part).
 double closingSpeed(const btPersistentManifold& manifold, const btManifoldPoint& point);
 
+/// The speed, m/s, at which the bodies at `point` slide over each other
+/// (their relative velocity across the normal).
+double slipSpeed(const btPersistentManifold& manifold, const btManifoldPoint& point);
+
 /// The first time, s, at which a gap of `gap` m closes from the closing
 /// speed `speed` and acceleration `accel` (constant), or infinity.
 double timeToClose(double gap, double speed, double accel);
