@@ -2,7 +2,8 @@
 #   bin/                  tabletop and the four example programs
 #   lib/                  the libraries (static)
 #   include/tabletop/     their headers, by layer (core/, physics/, sim/ ...)
-#   share/tabletop/       the shipped scenarios and the tolerance front,
+#   share/tabletop/       the shipped scenarios, the tolerance front and
+#                         the JSON Schemas of scenarios and run --json,
 #                         found by the installed programs (app/DataPaths.h)
 #   lib/cmake/tabletop/   the CMake package: find_package(tabletop) gives
 #                         tabletop::core, tabletop::physics, tabletop::sim ...
@@ -31,6 +32,7 @@ install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/ DESTINATION ${CMAKE_INSTALL_INCLUDE
 
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/scenarios/ DESTINATION ${CMAKE_INSTALL_DATADIR}/tabletop/scenarios)
 install(FILES ${PROJECT_SOURCE_DIR}/data/tolerance_front.json DESTINATION ${CMAKE_INSTALL_DATADIR}/tabletop/data)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/data/schema DESTINATION ${CMAKE_INSTALL_DATADIR}/tabletop/data)
 
 set(TABLETOP_PACKAGE_DIR ${CMAKE_INSTALL_LIBDIR}/cmake/tabletop)
 install(EXPORT tabletopTargets NAMESPACE tabletop:: DESTINATION ${TABLETOP_PACKAGE_DIR})

@@ -169,13 +169,7 @@ int runScenarios(const RunOptions& options, std::ostream& out, std::ostream& err
   for (const std::string& line : choices) (options.json ? err : text) << line << "\n";
   if (!choices.empty() && !options.json) text << "\n";
   if (options.json) {
-    if (results.size() == 1) {
-      text << toJson(results.front()).dump(2) << "\n";
-    } else {
-      nlohmann::json all = nlohmann::json::array();
-      for (const RunResult& r : results) all.push_back(toJson(r));
-      text << all.dump(2) << "\n";
-    }
+    text << runDocument(results).dump(2) << "\n";
   } else {
     for (std::size_t i = 0; i < results.size(); ++i) text << (i ? "\n" : "") << formatText(results[i]);
   }

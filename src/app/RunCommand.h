@@ -58,8 +58,8 @@ void addRunOptions(CLI::App& command, RunOptions& options, bool withMode = true)
 Scenario loadScenario(const ScenarioSource& source, const RunOptions& options,
                       std::vector<std::string>* choiceLines = nullptr);
 
-/// Runs every scenario, then prints all outcomes to `out` (text, or JSON: an
-/// object for one scenario, an array for several). Problems go to `err`,
+/// Runs every scenario, then prints all outcomes to `out` (text, or JSON:
+/// one document, runDocument(), for one scenario as for several). Problems go to `err`,
 /// one line each, and then nothing is printed to `out`. A run that
 /// diverges is printed marked incomplete, its error goes to `err`, and the
 /// status is kExitDiverged. Ctrl-C or SIGTERM stops it between two steps

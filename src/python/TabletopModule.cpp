@@ -1,5 +1,5 @@
 // `import tabletop`: scenarios loaded from files or built from Python
-// objects, run whole (the same result as `tabletop run --json`) or stepped
+// objects, run whole (the run `tabletop run --json` prints) or stepped
 // from Python in any of the three modes, their state as NumPy arrays, and
 // frames rendered headless into NumPy images. Errors are Python
 // exceptions carrying the command line's located messages.
@@ -235,8 +235,8 @@ PYBIND11_MODULE(tabletop, m) {
       },
       py::arg("scene"), py::kw_only(), py::arg("mode") = "bullet", py::arg("timestep") = py::none(),
       py::arg("iterations") = py::none(), py::arg("integrator") = py::none(), py::arg("duration") = py::none(),
-      "Runs a scenario (a Scenario, a file's path, or a scene's objects) to its end and returns what `tabletop run "
-      "--json` prints: entities, events, state_hash, complete. A run that diverges returns complete False with its "
+      "Runs a scenario (a Scenario, a file's path, or a scene's objects) to its end and returns its run as `tabletop "
+      "run --json` prints it (one entry of the document's runs): entities, events, state_hash, complete. A run that diverges returns complete False with its "
       "failure. The keyword settings override the scenario's, as run's options do.");
 
   py::class_<Stepper>(m, "Simulation",

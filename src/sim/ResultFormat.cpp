@@ -47,6 +47,12 @@ std::string describe(const Event& e) {
   return "";
 }
 
+nlohmann::json runDocument(const std::vector<RunResult>& results) {
+  nlohmann::json runs = nlohmann::json::array();
+  for (const RunResult& r : results) runs.push_back(toJson(r));
+  return {{"format_version", kRunFormatVersion}, {"runs", std::move(runs)}};
+}
+
 std::string formatText(const RunResult& r) {
   std::ostringstream out;
   out << r.scenario << "  (" << r.file << ")\n";

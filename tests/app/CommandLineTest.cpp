@@ -28,13 +28,21 @@ namespace {
 
 using namespace tabletop::testing;
 
+// The one run in run --json's document, {"format_version": 1, "runs": [...]}
+// (the same shape for one scenario as for several).
+nlohmann::json onlyRun(const std::string& text) {
+  const nlohmann::json document = nlohmann::json::parse(text);
+  EXPECT_EQ(document.at("format_version"), 1);
+  EXPECT_EQ(document.at("runs").size(), 1u);
+  return document.at("runs").at(0);
+}
 
 // The check: the JSON object, with the struck cube dropped and the
 // contact before the drop.
 TEST(CommandLine, RunJsonPrintsTheOutcomeObject) {
   const Outcome o = run(kBin + "tabletop run " + kScenarios + "example2_two_cubes.json --json");
   ASSERT_EQ(o.status, 0) << o.err;
-  const auto j = nlohmann::json::parse(o.out);
+  const auto j = onlyRun(o.out);
   for (const char* key : {"scenario", "mode", "settings", "sim_time", "steps", "wall_seconds", "entities",
                           "events", "state_hash"}) {
     EXPECT_TRUE(j.contains(key)) << key;
@@ -88,8 +96,8 @@ TEST(CommandLine, RunHeaderNamesTheContactSolver) {
 // Two processes, the same scenario and settings: the same hash.
 TEST(CommandLine, HashIsRepeatableAcrossProcesses) {
   const std::string cmd = kBin + "tabletop run " + kScenarios + "example3_stacked_cubes.json --json";
-  const auto a = nlohmann::json::parse(run(cmd).out);
-  const auto b = nlohmann::json::parse(run(cmd).out);
+  const auto a = onlyRun(run(cmd).out);
+  const auto b = onlyRun(run(cmd).out);
   EXPECT_EQ(a["state_hash"], b["state_hash"]);
 }
 
@@ -97,9 +105,9 @@ TEST(CommandLine, HashIsRepeatableAcrossProcesses) {
 TEST(CommandLine, ExampleExecutablesRunTheirScenario) {
   const Outcome o = run(kBin + "example4_two_spheres --json");
   ASSERT_EQ(o.status, 0) << o.err;
-  const auto j = nlohmann::json::parse(o.out);
+  const auto j = onlyRun(o.out);
   EXPECT_EQ(j["scenario"], "example4_two_spheres");
-  const auto file = nlohmann::json::parse(run(kBin + "tabletop run --json " + kScenarios +
+  const auto file = onlyRun(run(kBin + "tabletop run --json " + kScenarios +
                                               "example4_two_spheres.json").out);
   EXPECT_EQ(j["state_hash"], file["state_hash"]);
 }
@@ -166,7 +174,7 @@ TEST(CommandLine, DivergenceIsStatusThreeAndMarkedIncomplete) {
   EXPECT_NE(o.out.find("INCOMPLETE"), std::string::npos) << o.out;
   o = run(kBin + "tabletop run --json " + path);
   EXPECT_EQ(o.status, 3);
-  const nlohmann::json j = nlohmann::json::parse(o.out);
+  const nlohmann::json j = onlyRun(o.out);
   EXPECT_FALSE(j["complete"].get<bool>());
   EXPECT_NE(j["failure"].get<std::string>().find("entity 'A'"), std::string::npos);
   const std::string dir = ::testing::TempDir() + "absurd_frames";
@@ -180,7 +188,7 @@ TEST(CommandLine, DivergenceIsStatusThreeAndMarkedIncomplete) {
   // A finished run says it is complete.
   o = run(kBin + "tabletop run --json " + kScenarios + "example1_single_cube.json");
   EXPECT_EQ(o.status, 0);
-  EXPECT_TRUE(nlohmann::json::parse(o.out)["complete"].get<bool>());
+  EXPECT_TRUE(onlyRun(o.out)["complete"].get<bool>());
 }
 
 // The command line's overrides are held to the same step budget.
@@ -259,7 +267,7 @@ TEST(CommandLine, RunOutWritesTheFileWholeOrNotAtAll) {
   EXPECT_EQ(o.status, 0) << o.err;
   EXPECT_TRUE(o.out.empty()) << o.out;
   std::ifstream in(file);
-  const nlohmann::json j = nlohmann::json::parse(in);
+  const nlohmann::json j = onlyRun(std::string(std::istreambuf_iterator<char>(in), {}));
   EXPECT_EQ(j["scenario"], "example1_single_cube");
   EXPECT_FALSE(std::filesystem::exists(file + ".part"));
   o = run(kBin + "tabletop run --out /no/such/dir/out.json " + kScenarios + "example1_single_cube.json");
@@ -275,7 +283,7 @@ TEST(CommandLine, RunTraceWritesEveryStep) {
   const std::string scene = kScenarios + "analytic/free_flight.json";
   Outcome o = run(kBin + "tabletop run --json --trace " + file + " " + scene);
   ASSERT_EQ(o.status, 0) << o.err;
-  const nlohmann::json j = nlohmann::json::parse(o.out);
+  const nlohmann::json j = onlyRun(o.out);
   std::ifstream in(file);
   std::string line, last;
   std::getline(in, line);
@@ -335,7 +343,7 @@ TEST(CommandLine, RunToleranceChoosesAndSaysWhy) {
   o = run(kBin + "tabletop run " + kScenarios + "analytic/cube_slides_to_rest.json --json --tolerance 1e-3" + front);
   ASSERT_EQ(o.status, 0) << o.err;
   EXPECT_NE(o.err.find("for an error of at most 0.001 m"), std::string::npos) << o.err;
-  const auto j = nlohmann::json::parse(o.out);
+  const auto j = onlyRun(o.out);
   EXPECT_GT(j["settings"]["timestep"].get<double>(), 0.0);
   o = run(kBin + "tabletop run " + kScenarios + "analytic/cube_slides_to_rest.json --tolerance 1e-3 --front " +
           kScenarios + "no_such_front.json");
@@ -396,7 +404,7 @@ TEST(CommandLine, EveryModeRunsWithTheSameOutputFormat) {
   for (const char* mode : {"bullet", "compat", "rules"}) {
     const Outcome o = run(kBin + "tabletop run --json --mode " + mode + " " + kScenarios + "example2_two_cubes.json");
     ASSERT_EQ(o.status, 0) << mode << ": " << o.err;
-    const nlohmann::json j = nlohmann::json::parse(o.out);
+    const nlohmann::json j = onlyRun(o.out);
     EXPECT_EQ(j["mode"], mode);
     std::vector<std::string> these;
     for (const auto& [key, value] : j["entities"][0].items()) these.push_back(key);
@@ -504,7 +512,7 @@ TEST(CommandLine, RenderMakesFramesAndVideos) {
   // Frames every 0.1 s from 0 to where the run ends (everything at rest)
   // and half a second more.
   const double end =
-      nlohmann::json::parse(run(kBin + "tabletop run --json " + kScenarios + "example2_two_cubes.json").out)["sim_time"];
+      onlyRun(run(kBin + "tabletop run --json " + kScenarios + "example2_two_cubes.json").out)["sim_time"];
   const int last = static_cast<int>(std::floor((end + 0.5) * 10.0 + 1e-9));
   char name[32];
   std::snprintf(name, sizeof name, "/frame_%05d.png", last);

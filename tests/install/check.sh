@@ -15,7 +15,8 @@ prefix=$work/prefix
 cmake --install "$build_dir" --prefix "$prefix" > "$work/install.log"
 for f in bin/tabletop bin/example1_single_cube lib/libtabletop_sim.a include/tabletop/sim/SceneBuilder.h \
          share/tabletop/scenarios/example1_single_cube.json share/tabletop/scenarios/analytic/free_flight.json \
-         share/tabletop/scenarios/hard/tall_stack_10.json share/tabletop/data/tolerance_front.json \
+         share/tabletop/scenarios/hard/tall_stack_10.json share/tabletop/data/tolerance_front.json share/tabletop/data/schema/scenario.schema.json \
+         share/tabletop/data/schema/run-output.schema.json \
          lib/cmake/tabletop/tabletopConfig.cmake; do
   [ -e "$prefix/$f" ] || { echo "FAIL: $f was not installed"; exit 1; }
 done

@@ -3,6 +3,7 @@
 CTest sets TABLETOP_BIN (the built `tabletop`) and PYTHONPATH (the built
 module); TABLETOP_SOURCE_DIR is the repository's root.
 """
+import json
 import os
 import pathlib
 
@@ -23,3 +24,30 @@ def tabletop_bin():
     if not path:
         pytest.skip("TABLETOP_BIN is not set (CTest sets it)")
     return path
+
+
+def without_comments(text):
+    """A scenario file's text with its // and /* */ comments blanked (strings kept), as the loader reads it."""
+    out, i, n = [], 0, len(text)
+    while i < n:
+        c = text[i]
+        if c == '"':
+            j = i + 1
+            while j < n and text[j] != '"':
+                j += 2 if text[j] == "\\" else 1
+            out.append(text[i:j + 1])
+            i = j + 1
+        elif text.startswith("//", i):
+            j = text.find("\n", i)
+            i = n if j < 0 else j
+        elif text.startswith("/*", i):
+            j = text.find("*/", i + 2)
+            i = n if j < 0 else j + 2
+        else:
+            out.append(c)
+            i += 1
+    return "".join(out)
+
+
+def schema(name):
+    return json.loads((SOURCE / "data" / "schema" / name).read_text())

@@ -25,9 +25,9 @@ def cube_scene(friction=0.5, shape="cube", size=0.1, on="table"):
 
 @pytest.mark.parametrize("path", shipped_scenarios(), ids=lambda p: p.stem)
 def test_run_matches_the_command_line(path, tabletop_bin):
-    """run() is `tabletop run --json`: the same entities, events and state hash."""
+    """run() is the run in `tabletop run --json`'s document: the same entities, events and state hash."""
     cli = json.loads(subprocess.run([tabletop_bin, "run", "--json", str(path)], capture_output=True, text=True,
-                                    check=False).stdout)
+                                    check=False).stdout)["runs"][0]
     ours = tabletop.run(str(path))
     assert ours["state_hash"] == cli["state_hash"]
     assert ours["complete"] == cli["complete"]
@@ -38,7 +38,7 @@ def test_run_matches_the_command_line(path, tabletop_bin):
 def test_every_mode_matches_the_command_line(mode, tabletop_bin):
     path = SCENARIOS / "example3_stacked_cubes.json"
     cli = json.loads(subprocess.run([tabletop_bin, "run", "--json", "--mode", mode, str(path)],
-                                    capture_output=True, text=True, check=True).stdout)
+                                    capture_output=True, text=True, check=True).stdout)["runs"][0]
     assert tabletop.run(path, mode=mode)["state_hash"] == cli["state_hash"]
     stepped = tabletop.Simulation(tabletop.load(str(path)), mode=mode)
     stepped.run_to_end()
@@ -48,7 +48,7 @@ def test_every_mode_matches_the_command_line(mode, tabletop_bin):
 def test_overrides_are_the_command_lines(tabletop_bin):
     path = str(SCENARIOS / "example1_single_cube.json")
     cli = json.loads(subprocess.run([tabletop_bin, "run", "--json", "--timestep", "0.01", "--integrator", "euler",
-                                     "--iterations", "20", path], capture_output=True, text=True, check=True).stdout)
+                                     "--iterations", "20", path], capture_output=True, text=True, check=True).stdout)["runs"][0]
     ours = tabletop.run(path, timestep=0.01, integrator="euler", iterations=20)
     assert ours["state_hash"] == cli["state_hash"]
     assert ours["settings"] == cli["settings"]
