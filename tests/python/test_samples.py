@@ -1,0 +1,23 @@
+"""Every sample output in the README and docs is what the program prints (docs/make-samples.py writes them)."""
+import importlib.util
+
+import pytest
+
+from conftest import SOURCE
+
+spec = importlib.util.spec_from_file_location("make_samples", SOURCE / "docs" / "make-samples.py")
+make_samples = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(make_samples)
+
+CASES = [(page, args, shown) for page in make_samples.PAGES for args, shown in make_samples.samples(page)]
+
+
+def test_the_readme_has_samples():
+    assert any(page == "README.md" for page, _, _ in CASES)
+
+
+@pytest.mark.parametrize("page, args, shown", CASES, ids=[f"{p}: {a}" for p, a, _ in CASES])
+def test_a_sample_is_what_the_program_prints(page, args, shown, tabletop_bin):
+    printed = make_samples.output(tabletop_bin, args)
+    assert make_samples.comparable(shown) == make_samples.comparable(printed), \
+        f"{page}: the sample of `tabletop {args}` is stale; run docs/make-samples.py"
