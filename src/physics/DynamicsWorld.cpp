@@ -48,6 +48,18 @@ void keepDeepestPoint(btPersistentManifold& manifold) {
 
 }  // namespace
 
+DynamicsWorld::DynamicsWorld(btDispatcher* dispatcher, btBroadphaseInterface* broadphase,
+                             btConstraintSolver* solver, btCollisionConfiguration* configuration)
+    : btDiscreteDynamicsWorld(dispatcher, broadphase, solver, configuration) {
+  // Bullet made its own with btAlignedAlloc and placement new.
+  if (m_ownsIslandManager) {
+    m_islandManager->~btSimulationIslandManager();
+    btAlignedFree(m_islandManager);
+  }
+  m_islandManager = &islands_;
+  m_ownsIslandManager = false;
+}
+
 // Bullet calls this first in a step, before any velocity changes: the
 // velocities the second-order update starts from are read here.
 void DynamicsWorld::applyGravity() {

@@ -7,6 +7,7 @@
 
 #include <btBulletDynamicsCommon.h>
 
+#include "physics/ContactIslands.h"
 #include "physics/ContactResult.h"
 
 namespace tabletop {
@@ -35,7 +36,9 @@ namespace tabletop {
 ///     it was given.
 class DynamicsWorld : public btDiscreteDynamicsWorld {
  public:
-  using btDiscreteDynamicsWorld::btDiscreteDynamicsWorld;
+  /// Bullet's world with its islands joined by contacts (ContactIslands).
+  DynamicsWorld(btDispatcher* dispatcher, btBroadphaseInterface* broadphase, btConstraintSolver* solver,
+                btCollisionConfiguration* configuration);
 
   /// The largest acceleration smooth forces (gravity, sliding friction)
   /// give a body, m/s^2: a velocity change beyond it times the step is an
@@ -105,6 +108,7 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   std::unordered_set<const btCollisionObject*> sliding_;  // bodies whose friction was at its limit in it
   std::vector<btVector3> startVelocities_;
   CarriedImpulses carried_;  // per non-static body, at the step's start
+  ContactIslands islands_;   // replaces the island manager Bullet made
 };
 
 }  // namespace tabletop

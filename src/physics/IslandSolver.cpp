@@ -5,6 +5,8 @@
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 #include <BulletDynamics/Dynamics/btRigidBody.h>
 
+#include "physics/Impacts.h"
+
 namespace tabletop {
 namespace {
 
@@ -12,6 +14,9 @@ namespace {
 constexpr double kLoadTouching = 1e-4;
 // ... and its normal is within 45 degrees of the vertical (cos 45).
 constexpr double kLoadNormal = 0.7071;
+// A touching point slides when its bodies slip over each other faster
+// than this, m/s.
+constexpr double kSlideSpeed = 1e-3;
 
 bool isDynamic(const btCollisionObject* object) {
   const btRigidBody* body = btRigidBody::upcast(object);
@@ -31,15 +36,20 @@ bool IslandSolver::solveDirectly(btPersistentManifold** manifolds, int numManifo
   if (rows > rowLimit_) return false;
   if (choice_ == ContactSolver::Dantzig) return true;
   if (gravity_ == 0) return false;
+  bool slides = false;
   for (int m = 0; m < numManifolds; ++m) {
     const btPersistentManifold* manifold = manifolds[m];
-    if (!isDynamic(manifold->getBody0()) || !isDynamic(manifold->getBody1())) continue;
+    const bool bothDynamic = isDynamic(manifold->getBody0()) && isDynamic(manifold->getBody1());
     for (int p = 0; p < manifold->getNumContacts(); ++p) {
       const btManifoldPoint& point = manifold->getContactPoint(p);
-      if (point.getDistance() <= kLoadTouching && std::abs(point.m_normalWorldOnB.y()) >= kLoadNormal) return true;
+      if (point.getDistance() > kLoadTouching) continue;
+      if (bothDynamic && std::abs(point.m_normalWorldOnB.y()) >= kLoadNormal) return true;
+      // A point sunk in (a landing) is left to the sweeps' split impulse.
+      if (point.getDistance() < -kLoadTouching) return false;
+      slides = slides || slipSpeed(*manifold, point) > kSlideSpeed;
     }
   }
-  return false;
+  return slides;
 }
 
 void IslandSolver::convertContacts(btPersistentManifold** manifolds, int numManifolds,

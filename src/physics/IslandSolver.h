@@ -18,7 +18,9 @@ namespace tabletop {
 /// ContactSolver says which: SequentialImpulse never pivots; Dantzig
 /// pivots every island of at most `rowLimit` rows; Automatic pivots those
 /// that carry a load (a body resting on another, where sweeps pass the
-/// weight down too slowly) and sweeps the rest. An island the pivoting
+/// weight down too slowly) or slide on a touching point (where sweeps let
+/// friction shift the load between the points unevenly: a cube with
+/// mu = 0.9 slid 29 mm short and turned 4 degrees) and sweeps the rest. An island the pivoting
 /// fails on is swept (Bullet's own fallback).
 ///
 /// Friction in an island solved exactly: a contact point keeps a second

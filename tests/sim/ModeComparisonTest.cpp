@@ -81,7 +81,7 @@ TEST(PinnedDifference, MisalignedCubesTurnInFullPhysics) {
   EXPECT_EQ(b.modes[2].verdict.rfind("diverges: stopped short, rotated", 0), 0u) << b.modes[2].verdict;
   // Every reason that applies, the largest (against its threshold) first:
   // the striker, turned aside by the corner it met.
-  EXPECT_EQ(entity(c, "A").modes[2].verdict, "diverges: stopped short, rotated, went sideways");
+  EXPECT_EQ(entity(c, "A").modes[2].verdict, "diverges: stopped short, went sideways, rotated");
 }
 
 // A 20 g sphere strikes a 2 kg one head-on. The rules stop the striker at
