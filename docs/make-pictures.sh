@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates the README's pictures with `tabletop render` (headless; the
+# Regenerates the README's pictures with `tabletop render`, `bench` and `compare` (headless; the
 # GIF needs ffmpeg). Usage, after building: docs/make-pictures.sh [TABLETOP]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -25,3 +25,6 @@ still example4_two_spheres 1.0
 "$tabletop" bench scenarios/analytic/cube_slides_to_rest.json --repeats 5 --rates 30,60,120,240,1000,4000 \
   --iterations 10,50 --out "$work/bench" > /dev/null
 cp "$work/bench/bench_cube_slides_to_rest.png" docs/bench_cube_slides_to_rest.png
+
+# compare's top view of the misaligned cubes in the three modes.
+"$tabletop" compare scenarios/misaligned_cubes.json --plot docs/misaligned_cubes_compare.png > /dev/null
