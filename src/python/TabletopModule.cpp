@@ -11,7 +11,6 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include "core/StateHash.h"
 #include "draw/Camera.h"
 #include "draw/SceneDrawing.h"
 #include "headless/OsMesaContext.h"
@@ -129,20 +128,7 @@ class Stepper {
     return out;
   }
 
-  RunResult result() const {
-    RunResult r;
-    r.scenario = scenario_->name;
-    r.file = scenario_->file;
-    r.mode = std::string(simulation_->modeName());
-    r.settings = scenario_->settings;
-    r.simTime = simulation_->time();
-    r.steps = simulation_->steps();
-    r.entities = simulation_->snapshot();
-    r.events = simulation_->events();
-    r.stateHash = stateHash(r.entities);
-    r.solverUse = simulation_->solverUse();
-    return r;
-  }
+  RunResult result() const { return outcomeNow(*scenario_, scenario_->settings, *simulation_); }
 
   py::array_t<std::uint8_t> render(int width, int height, const std::string& cameraName, bool arrow) const {
     if (width < 1 || height < 1 || width > 8192 || height > 8192) {

@@ -11,15 +11,23 @@ RunResult runScript(const Scenario& scenario, const Settings& settings, Simulati
                     const StepObserver& afterStep) {
   const auto start = std::chrono::steady_clock::now();
   ScriptPlayer player(scenario, settings, sim, afterStep);
-  RunResult r;
+  bool complete = true;
+  std::string failure;
   try {
     player.runToEnd();
   } catch (const DivergenceError& e) {
-    r.complete = false;
-    r.failure = e.what();
+    complete = false;
+    failure = e.what();
   }
-
+  RunResult r = outcomeNow(scenario, settings, sim);
   r.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.complete = complete;
+  r.failure = failure;
+  return r;
+}
+
+RunResult outcomeNow(const Scenario& scenario, const Settings& settings, const Simulation& sim) {
+  RunResult r;
   r.scenario = scenario.name;
   r.file = scenario.file;
   r.mode = std::string(sim.modeName());

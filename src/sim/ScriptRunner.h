@@ -15,4 +15,8 @@ namespace tabletop {
 RunResult runScript(const Scenario& scenario, const Settings& settings, Simulation& simulation,
                     const StepObserver& afterStep = {});
 
+/// The outcome of `simulation` as it is now (no wall time, complete): what
+/// runScript returns, for a simulation stepped by other means.
+RunResult outcomeNow(const Scenario& scenario, const Settings& settings, const Simulation& simulation);
+
 }  // namespace tabletop
