@@ -183,6 +183,10 @@ int runScenarios(const RunOptions& options, std::ostream& out, std::ostream& err
 }
 
 int parseAndRun(CLI::App& app, int argc, char** argv, int& status) {
+  // A refused option is one line, like every other refusal.
+  app.failure_message([](const CLI::App*, const CLI::Error& e) {
+    return std::string("tabletop: ") + e.what() + " (--help lists the options)\n";
+  });
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
