@@ -1,7 +1,5 @@
 #include "app/BenchCommand.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -16,8 +14,9 @@
 #include "app/BenchTables.h"
 #include "app/DataPaths.h"
 #include "app/GnuplotFile.h"
-#include "app/OptionChecks.h"
 #include "app/InterruptGuard.h"
+#include "app/OptionChecks.h"
+#include "app/Progress.h"
 #include "app/RunCommand.h"
 #include "io/AtomicFile.h"
 #include "scenario/ScenarioError.h"
@@ -50,29 +49,6 @@ std::vector<std::string> defaultScenes(const std::string& dir) {
   return files;
 }
 
-
-// A bar on standard error, redrawn in place, when it is a terminal.
-class Progress {
- public:
-  explicit Progress(std::ostream& err) : err_(err), shown_(isatty(STDERR_FILENO)) {}
-  void start(long total) { total_ = total; }
-  void advance(const std::string& what) {
-    ++done_;
-    if (!shown_) return;
-    const int width = 30, filled = static_cast<int>(width * done_ / std::max(1L, total_));
-    err_ << "\r[" << std::string(filled, '#') << std::string(width - filled, ' ') << "] " << done_ << "/" << total_
-         << " " << what << "\033[K" << std::flush;
-  }
-  ~Progress() {
-    if (shown_) err_ << "\r\033[K" << std::flush;
-  }
-
- private:
-  std::ostream& err_;
-  long total_ = 0;
-  long done_ = 0;
-  bool shown_;
-};
 
 // What the measuring loops report to a terminal, and how Ctrl-C stops them.
 MeasureHooks hooks(const InterruptGuard& interrupt, Progress& progress) {

@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include "core/Text.h"
+#include "draw/CameraChoice.h"
 
 namespace tabletop {
 
@@ -32,6 +33,17 @@ inline CLI::Validator finiteRange(double lo, double hi) {
         return "";
       },
       "NUMBER from " + range.str());
+}
+
+/// --camera's value, as CameraChoice reads it (shown as CAMERA in help).
+inline CLI::Validator cameraChoice() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        const auto choice = CameraChoice::parse(text);
+        const std::string* why = std::get_if<std::string>(&choice);
+        return why ? *why : std::string();
+      },
+      "CAMERA");
 }
 
 /// A command-line choice among an enum's names, case-insensitive ("RULES"

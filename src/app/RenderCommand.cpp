@@ -10,19 +10,22 @@
 #include <iomanip>
 #include <regex>
 #include <sstream>
+#include <variant>
 
 #include <CLI/CLI.hpp>
 
 #include "app/InterruptGuard.h"
 #include "app/OptionChecks.h"
+#include "app/Progress.h"
 #include "core/Text.h"
 #include "draw/Camera.h"
+#include "draw/CameraChoice.h"
 #include "draw/SceneDrawing.h"
-#include "headless/OsMesaContext.h"
+#include "headless/HeadlessFrames.h"
 #include "headless/VideoEncoder.h"
 #include "image/PngFile.h"
 #include "io/FolderLock.h"
-#include "render/GlRenderer.h"
+#include "io/TemporaryFolder.h"
 #include "scenario/ScenarioError.h"
 #include "sim/DivergenceGuard.h"
 #include "sim/SceneBuilder.h"
@@ -69,45 +72,83 @@ std::string frameName(long k) {
   return name;
 }
 
-// The scene, its script player, the offscreen context and the renderer of
-// one render command.
+// The scene and its script player, stepped to each frame's time.
+class Playback {
+ public:
+  Playback(const Scenario& scenario, const Settings& settings, SimulationMode mode)
+      : simulation_(buildSimulation(scenario, settings, mode)), player_(scenario, settings, *simulation_) {
+    player_.runDue();
+  }
+  /// Steps until `t` or the end of the run.
+  void stepTo(double t) {
+    while (simulation_->time() < t - kTimeSlack && !player_.finished()) player_.step();
+  }
+  bool finished() const { return player_.finished(); }
+  double time() const { return simulation_->time(); }
+  const Simulation& simulation() const { return *simulation_; }
+  const ScriptPlayer& player() const { return player_; }
+
+ private:
+  std::unique_ptr<Simulation> simulation_;
+  ScriptPlayer player_;
+};
+
+// The times of the frames: the stills asked for, or every 1/fps from 0 to
+// the end of the run and kHoldSeconds more (which `playback` finds by
+// playing the run, adding what each frame shows to `extent`). A run that
+// diverges ends its frames at the one where it diverged, so the frames
+// before it are drawn and the drawing meets the divergence there again.
+std::vector<double> frameTimes(const RenderOptions& options, Playback& playback, const Scenario& scenario,
+                               SceneExtent& extent, const InterruptGuard& interrupt) {
+  std::vector<double> asked = options.at, times;
+  std::sort(asked.begin(), asked.end());
+  asked.erase(std::unique(asked.begin(), asked.end()), asked.end());
+  double end = std::numeric_limits<double>::infinity();
+  for (long k = 0; !interrupt.requested(); ++k) {
+    if (asked.empty() ? k / options.fps > end + kTimeSlack : k == static_cast<long>(asked.size())) break;
+    times.push_back(asked.empty() ? k / options.fps : asked[k]);
+    try {
+      playback.stepTo(times.back());
+    } catch (const DivergenceError&) {
+      break;
+    }
+    extent.add(sceneBounds(scenario, playback.simulation().snapshot()));
+    if (playback.finished() && !std::isfinite(end)) end = playback.time() + kHoldSeconds;
+  }
+  return times;
+}
+
+// The offscreen context and the renderer of one render command, drawing
+// the frames of its own playback of the scene.
 class FrameMaker {
  public:
-  FrameMaker(const Scenario& scenario, const Settings& settings, const RenderOptions& options, const Camera& camera,
-             int width, int height)
+  FrameMaker(const Scenario& scenario, const Settings& settings, const RenderOptions& options,
+             const CameraChoice& camera, int width, int height)
       : scenario_(scenario),
         options_(options),
         camera_(camera),
-        simulation_(buildSimulation(scenario, settings, options.run.mode)),
-        player_(scenario, settings, *simulation_),
-        context_(width, height),
-        renderer_(context_.gl()) {
-    player_.runDue();
-  }
+        playback_(scenario, settings, options.run.mode),
+        frames_(width, height) {}
 
   /// Steps until `t` (or the end of the run) and writes the frame to `path`.
-  void frameAt(double t, const std::string& path) {
-    while (simulation_->time() < t - kTimeSlack && !player_.finished()) player_.step();
+  void frameAt(double t, const SceneExtent& extent, const std::string& path) {
+    playback_.stepTo(t);
     DrawOptions drawOptions;
     drawOptions.arrow = options_.arrow;
     drawOptions.contacts = options_.contacts;
-    const DrawList list = makeDrawList(scenario_, simulation_->snapshot(), player_.arrow(),
-                                       simulation_->contactPoints(), drawOptions);
-    renderer_.draw(list, camera_, context_.width(), context_.height());
-    writePng(renderer_.readPixels(context_.width(), context_.height()), path);
+    const std::vector<EntityState> states = playback_.simulation().snapshot();
+    const DrawList list = makeDrawList(scenario_, states, playback_.player().arrow(),
+                                       playback_.simulation().contactPoints(), drawOptions);
+    const Camera camera = cameraFor(camera_, scenario_, states, extent, double(frames_.width()) / frames_.height());
+    writePng(frames_.draw(list, camera), path);
   }
-
-  bool finished() const { return player_.finished(); }
-  double time() const { return simulation_->time(); }
 
  private:
   const Scenario& scenario_;
   const RenderOptions& options_;
-  Camera camera_;
-  std::unique_ptr<Simulation> simulation_;
-  ScriptPlayer player_;
-  OsMesaContext context_;
-  GlRenderer renderer_;
+  const CameraChoice& camera_;
+  Playback playback_;
+  HeadlessFrames frames_;
 };
 
 }  // namespace
@@ -122,7 +163,8 @@ std::optional<std::pair<int, int>> parseImageSize(const std::string& text) {
 }
 
 void addRenderOptions(CLI::App& command, RenderOptions& options) {
-  command.add_option("--out", options.outDir, "Directory for the PNG frames (made if missing)")->required();
+  command.add_option("--out", options.outDir,
+                     "Folder for the PNG frames (made if missing); needed unless --video is given");
   CLI::Option* at = command.add_option("--at", options.at, "Stills at these simulated times, seconds (T1,T2,...)")
                         ->delimiter(',')
                         ->check(finiteRange(0.0, 3600.0));
@@ -130,11 +172,14 @@ void addRenderOptions(CLI::App& command, RenderOptions& options) {
       command.add_option("--fps", options.fps, "Frames per simulated second, from 0 to the end of the run (default 30)")
           ->check(finiteRange(0.1, 1000.0));
   at->excludes(fps);
-  command.add_option("--size", options.size, "Image size in pixels, WxH (default 960x720)");
-  command.add_option("--camera", options.camera, "View: front (the report's), corner, side or top")
-      ->check(CLI::IsMember(Camera::names()));
-  command.add_option("--video", options.video, "Also encode the frames with ffmpeg into FILE.mp4 or FILE.gif")
-      ->excludes(at);
+  command.add_option("--size", options.size, "Image size in pixels, WxH (default " + options.size + ")");
+  command.add_option("--camera", options.camera, CameraChoice::help())
+      ->check(cameraChoice());
+  CLI::Option* video =
+      command.add_option("--video", options.video, "Encode the frames with ffmpeg into FILE.mp4 or FILE.gif")
+          ->excludes(at);
+  command.add_flag("--keep-frames", options.keepFrames, "With --video, keep the frames in --out (default: removed)")
+      ->needs(video);
   command.add_flag("!--no-arrow", options.arrow, "Hide the push arrow (the report's Push Direction Off)");
   command.add_flag("--contacts", options.contacts, "Draw contact points");
 }
@@ -145,10 +190,29 @@ int renderScenario(const RenderOptions& options, std::ostream& out, std::ostream
     err << "tabletop render: --size: expected WxH with each side 1..8192 pixels, got '" << options.size << "'\n";
     return kExitBadInput;
   }
+  const auto parsed = CameraChoice::parse(options.camera);
+  if (const auto* why = std::get_if<std::string>(&parsed)) {
+    err << "tabletop render: --camera: " << *why << "\n";
+    return kExitBadInput;
+  }
+  const CameraChoice& camera = std::get<CameraChoice>(parsed);
+  if (options.outDir.empty() && !options.video) {
+    err << "tabletop render: --out: expected a folder for the frames (or --video FILE for a video alone)\n";
+    return kExitBadInput;
+  }
+  if (options.keepFrames && options.outDir.empty()) {
+    err << "tabletop render: --keep-frames: expected --out DIR to keep them in\n";
+    return kExitBadInput;
+  }
   if (options.video) {
     if (const auto problem = videoNameProblem(*options.video)) {
       err << "tabletop render: " << *problem << "\n";
       return kExitBadInput;
+    }
+    if (options.outDir.empty() && !ffmpegAvailable()) {
+      err << "tabletop render: --video: ffmpeg is not installed (apt-get install ffmpeg); --out DIR writes the "
+             "frames alone\n";
+      return kExitFailure;
     }
   }
 
@@ -159,8 +223,11 @@ int renderScenario(const RenderOptions& options, std::ostream& out, std::ostream
   std::unique_ptr<FrameMaker> maker;
   try {
     scenario = loadScenario(options.run.scenarios.front(), options.run);
-    maker = std::make_unique<FrameMaker>(scenario, scenario.settings, options, *Camera::named(options.camera, scenario.table),
-                                         size->first, size->second);
+    if (const std::string problem = camera.problemWith(scenario); !problem.empty()) {
+      err << "tabletop render: --camera: " << problem << "\n";
+      return kExitBadInput;
+    }
+    maker = std::make_unique<FrameMaker>(scenario, scenario.settings, options, camera, size->first, size->second);
   } catch (const ScenarioError& e) {
     for (const std::string& line : e.lines()) err << line << "\n";
     return kExitBadInput;
@@ -176,26 +243,40 @@ int renderScenario(const RenderOptions& options, std::ostream& out, std::ostream
     return kExitBadInput;
   }
 
+  // Frames nobody asked to keep go to a private folder removed at the end.
+  std::unique_ptr<TemporaryFolder> scratch;
+  std::string frameDir = options.outDir;
+  if (frameDir.empty()) {
+    try {
+      scratch = std::make_unique<TemporaryFolder>("tabletop-frames-");
+    } catch (const std::runtime_error& e) {
+      err << "tabletop render: " << e.what() << "\n";
+      return kExitFailure;
+    }
+    frameDir = scratch->path();
+  }
+  const std::string shownDir = options.outDir.empty() ? std::string("no folder") : shownText(options.outDir);
+
   std::error_code ec;
-  std::filesystem::create_directories(options.outDir, ec);
-  if (ec || !std::filesystem::is_directory(options.outDir)) {
-    err << "tabletop render: --out: cannot make the directory '" << shownText(options.outDir) << "'"
+  std::filesystem::create_directories(frameDir, ec);
+  if (ec || !std::filesystem::is_directory(frameDir)) {
+    err << "tabletop render: --out: cannot make the directory '" << shownText(frameDir) << "'"
         << (ec ? ": " + ec.message() : std::string()) << "\n";
     return kExitFailure;
   }
 
-  const std::filesystem::path dir(options.outDir);
+  const std::filesystem::path dir(frameDir);
   // One render at a time writes into a folder: the lock on the folder is
   // the kernel's, so it goes with a render that is killed, and what is
   // left then can only be a killed render's.
-  const FolderLock lock(options.outDir);
+  const FolderLock lock(frameDir);
   if (!lock.held()) {
-    err << "tabletop render: --out: another render is writing into '" << shownText(options.outDir) << "'\n";
+    err << "tabletop render: --out: another render is writing into '" << shownText(frameDir) << "'\n";
     return kExitFailure;
   }
   if (const int removed = removeKilledTemporaries(dir); removed > 0) {
     err << "tabletop render: removed " << removed << " temporary " << (removed == 1 ? "file" : "files")
-        << " that a killed render left in " << shownText(options.outDir) << "\n";
+        << " that a killed render left in " << shownText(frameDir) << "\n";
   }
   // A video that stays beside frames of another run would not show them:
   // a render that stops early takes the old video away with the old frames.
@@ -207,32 +288,31 @@ int renderScenario(const RenderOptions& options, std::ostream& out, std::ostream
   long frames = 0;
   const InterruptGuard interrupt;
   try {
-    if (!options.at.empty()) {
-      std::vector<double> times = options.at;
-      std::sort(times.begin(), times.end());
-      times.erase(std::unique(times.begin(), times.end()), times.end());
-      for (double t : times) {
-        if (interrupt.requested()) break;
-        maker->frameAt(t, (dir / stillName(t)).string());
-        ++frames;
-      }
-    } else {
+    // A first playback finds the frames' times and what they show, so a
+    // fitted camera frames the whole run from the first frame on.
+    SceneExtent extent;
+    Playback scout(scenario, settings, options.run.mode);
+    const std::vector<double> times = frameTimes(options, scout, scenario, extent, interrupt);
+    if (options.at.empty()) {
       // Old frames beyond this run's last would join a video of it.
       for (long k = 0; std::filesystem::remove(dir / frameName(k)); ++k) {
       }
-      double end = std::numeric_limits<double>::infinity();
-      for (long k = 0; k / options.fps <= end + kTimeSlack && !interrupt.requested(); ++k) {
-        maker->frameAt(k / options.fps, (dir / frameName(k)).string());
-        ++frames;
-        if (maker->finished() && !std::isfinite(end)) end = maker->time() + kHoldSeconds;
-      }
+    }
+    Progress progress(err);
+    progress.start(static_cast<long>(times.size()));
+    for (double t : times) {
+      if (interrupt.requested()) break;
+      const std::string name = options.at.empty() ? frameName(frames) : stillName(t);
+      maker->frameAt(t, extent, (dir / name).string());
+      ++frames;
+      progress.advance("frames");
     }
   } catch (const ScenarioError& e) {
     for (const std::string& line : e.lines()) err << line << "\n";
     return kExitBadInput;
   } catch (const DivergenceError& e) {
     err << scenario.file << ": " << e.what() << "; the " << frames << (frames == 1 ? " frame" : " frames")
-        << " before it in " << shownText(options.outDir) << dropOldVideo() << "\n";
+        << " before it in " << shownDir << dropOldVideo() << "\n";
     return kExitDiverged;
   } catch (const std::runtime_error& e) {
     err << "tabletop render: " << e.what() << "\n";
@@ -240,22 +320,30 @@ int renderScenario(const RenderOptions& options, std::ostream& out, std::ostream
   }
   if (interrupt.requested()) {
     err << "tabletop render: interrupted after " << frames << (frames == 1 ? " frame" : " frames")
-        << ", each complete, in " << shownText(options.outDir) << (options.video ? "; no video made" : "")
-        << dropOldVideo() << "\n";
+        << ", each complete, in " << shownDir << (options.video ? "; no video made" : "") << dropOldVideo() << "\n";
     return kExitInterrupted;
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   out << scenario.name << ": " << frames << (frames == 1 ? " frame" : " frames") << " of " << size->first << "x"
-      << size->second << " (camera " << options.camera << ", mode " << toString(options.run.mode) << ") in "
-      << options.outDir << ", " << wall << " s wall\n";
+      << size->second << " (camera " << options.camera << ", mode " << toString(options.run.mode) << ")"
+      << (options.outDir.empty() ? std::string() : " in " + options.outDir) << ", " << wall << " s wall\n";
 
   if (options.video) {
-    const auto problem = encodeVideo((dir / "frame_%05d.png").string(), options.fps, *options.video);
+    std::optional<std::string> problem;
+    {
+      Progress encoding(err);
+      encoding.say("encoding " + std::to_string(frames) + " frames into " + shownText(*options.video) + " ...");
+      problem = encodeVideo((dir / "frame_%05d.png").string(), options.fps, *options.video);
+    }
     if (problem) {
-      err << "tabletop render: " << *problem << "; the frames are in " << options.outDir << "\n";
+      err << "tabletop render: " << *problem << (options.outDir.empty() ? "" : "; the frames are in " + shownDir)
+          << "\n";
       return ffmpegAvailable() ? kExitFailure : kExitOk;
     }
     out << "video " << *options.video << "\n";
+    if (!options.outDir.empty() && !options.keepFrames) {
+      for (long k = 0; k < frames; ++k) std::filesystem::remove(dir / frameName(k), ec);
+    }
   }
   return kExitOk;
 }

@@ -5,7 +5,8 @@
 #include <CLI/CLI.hpp>
 
 #include "app/RenderCommand.h"
-#include "draw/Camera.h"
+#include "app/OptionChecks.h"
+#include "draw/CameraChoice.h"
 #include "scenario/ScenarioError.h"
 #include "viewer/Viewer.h"
 
@@ -16,9 +17,9 @@ void addViewOptions(CLI::App& command, ViewOptions& options) {
                    "Do not play the scenario's script on start (Enter plays it)");
   command.add_option("--step", options.step, "The step G pushes by, metres (default: the script's first step)")
       ->check(CLI::PositiveNumber);
-  command.add_option("--camera", options.camera, "View: front (the report's), corner, side or top")
-      ->check(CLI::IsMember(Camera::names()));
-  command.add_option("--size", options.size, "Window size in pixels, WxH (default 1024x768)");
+  command.add_option("--camera", options.camera, CameraChoice::help())
+      ->check(cameraChoice());
+  command.add_option("--size", options.size, "Window size in pixels, WxH (default " + options.size + ")");
   command.add_option("--screenshot-dir", options.screenshotDir, "Where F12 writes screenshots (default .)");
 }
 
@@ -36,12 +37,18 @@ int viewScenario(const ViewOptions& options, std::ostream& err) {
   }
   try {
     Scenario scenario = loadScenario(options.run.scenarios.front(), options.run);
+    const CameraChoice camera = std::get<CameraChoice>(CameraChoice::parse(options.camera));
+    if (const std::string problem = camera.problemWith(scenario); !problem.empty()) {
+      err << "tabletop view: --camera: " << problem << "\n";
+      return kExitBadInput;
+    }
     const Settings settings = scenario.settings;
     ViewerSettings viewer;
     viewer.mode = options.run.mode;
     viewer.playScript = options.playScript;
     viewer.step = options.step;
     viewer.camera = options.camera;
+    viewer.aspect = double(size->first) / size->second;
     ViewerSession session(std::move(scenario), settings, viewer);
     WindowSettings window;
     window.width = size->first;

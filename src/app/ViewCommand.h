@@ -13,8 +13,8 @@ struct ViewOptions {
   RunOptions run;                 ///< one scenario, --mode and the setting overrides
   bool playScript = true;         ///< --no-script: start still, play with Enter
   std::optional<double> step;     ///< --step: G's step, metres
-  std::string camera = "front";   ///< --camera
-  std::string size = "1024x768";  ///< --size WxH, the window
+  std::string camera = "fit";     ///< --camera: a CameraChoice
+  std::string size = "960x720";   ///< --size WxH, the window (as render's frames)
   std::string screenshotDir = ".";
 };
 

@@ -54,6 +54,7 @@ struct DrawList {
   double floorTile = 0.5;  ///< side of a floor tile, metres
   Colour floorColours[2] = {{205, 205, 200}, {175, 175, 170}};
   Colour contactColour{255, 0, 255};
+  double contactPixels = 7.0;       ///< a contact point's width in pixels
   Vec3 lamp;  ///< the light's position, metres
 };
 

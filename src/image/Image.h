@@ -31,6 +31,29 @@ struct Image {
       std::swap_ranges(rgb.begin() + top * stride, rgb.begin() + (top + 1) * stride, rgb.begin() + bottom * stride);
     }
   }
+
+  /// Each `factor` x `factor` square of pixels averaged into one (rounded):
+  /// how a frame drawn `factor` times larger is anti-aliased. The sides
+  /// must be multiples of `factor`.
+  Image shrunk(int factor) const {
+    Image out(width / factor, height / factor);
+    const int n = factor * factor;
+    for (int row = 0; row < out.height; ++row) {
+      for (int column = 0; column < out.width; ++column) {
+        for (int channel = 0; channel < 3; ++channel) {
+          int sum = 0;
+          for (int dy = 0; dy < factor; ++dy) {
+            for (int dx = 0; dx < factor; ++dx) {
+              sum += rgb[((static_cast<std::size_t>(row) * factor + dy) * width + column * factor + dx) * 3 + channel];
+            }
+          }
+          out.rgb[(static_cast<std::size_t>(row) * out.width + column) * 3 + channel] =
+              static_cast<std::uint8_t>((sum + n / 2) / n);
+        }
+      }
+    }
+    return out;
+  }
 };
 
 }  // namespace tabletop

@@ -6,15 +6,15 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <variant>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#include "draw/Camera.h"
+#include "draw/CameraChoice.h"
 #include "draw/SceneDrawing.h"
-#include "headless/OsMesaContext.h"
-#include "render/GlRenderer.h"
+#include "headless/HeadlessFrames.h"
 #include "scenario/ScenarioError.h"
 #include "scenario/ScenarioLoader.h"
 #include "sim/DivergenceGuard.h"
@@ -134,15 +134,20 @@ class Stepper {
     if (width < 1 || height < 1 || width > 8192 || height > 8192) {
       throw py::value_error("render: expected a width and height from 1 to 8192 pixels");
     }
-    const auto camera = Camera::named(cameraName, scenario_->table);
-    if (!camera) throw py::value_error("render: camera: expected front, corner, side or top, got '" + cameraName + "'");
-    OsMesaContext context(width, height);
-    GlRenderer renderer(context.gl());
+    const auto parsed = CameraChoice::parse(cameraName);
+    if (const auto* why = std::get_if<std::string>(&parsed)) throw py::value_error("render: camera: " + *why);
+    const CameraChoice& choice = std::get<CameraChoice>(parsed);
+    if (const std::string problem = choice.problemWith(*scenario_); !problem.empty()) {
+      throw py::value_error("render: camera: " + problem);
+    }
+    const std::vector<EntityState> states = simulation_->snapshot();
+    SceneExtent now;
+    now.add(sceneBounds(*scenario_, states));
+    const HeadlessFrames frames(width, height);
     DrawOptions options;
     options.arrow = arrow;
-    renderer.draw(makeDrawList(*scenario_, simulation_->snapshot(), player_->arrow(), {}, options), *camera, width,
-                  height);
-    const Image image = renderer.readPixels(width, height);
+    const Image image = frames.draw(makeDrawList(*scenario_, states, player_->arrow(), {}, options),
+                                    cameraFor(choice, *scenario_, states, now, double(width) / height));
     py::array_t<std::uint8_t> out({height, width, 3});
     std::copy(image.rgb.begin(), image.rgb.end(), out.mutable_data());
     return out;
@@ -251,9 +256,10 @@ PYBIND11_MODULE(tabletop, m) {
       .def("rotate", &Stepper::rotate, py::arg("entity"), py::arg("degrees"),
            "Turns an entity about its own vertical axis (the report's Rotate).")
       .def("render", &Stepper::render, py::arg("width") = 640, py::arg("height") = 480, py::kw_only(),
-           py::arg("camera") = "front", py::arg("arrow") = true,
-           "The scene now, drawn headless (OSMesa) from a named camera (front, corner, side, top), as a NumPy "
-           "array of shape (height, width, 3), uint8 RGB, top row first.")
+           py::arg("camera") = "fit", py::arg("arrow") = true,
+           "The scene now, drawn headless (OSMesa) and anti-aliased, as a NumPy array of shape (height, width, 3), "
+           "uint8 RGB, top row first. camera is render's --camera: fit (the scene as it is now), front, corner, "
+           "side, top, follow:NAME or 'EX,EY,EZ:TX,TY,TZ'.")
       .def_property_readonly(
           "positions", [](const Stepper& s) { return s.rows(3, [](const BodyMotion& b) { return std::vector<double>{b.position.x, b.position.y, b.position.z}; }); },
           "Centres, m, shape (n, 3).")

@@ -108,7 +108,7 @@ void GlRenderer::draw(const DrawList& list, const Camera& camera, int width, int
     // Contact points show through everything, as in the physics debuggers.
     gl_.Disable(GL_LIGHTING);
     gl_.Disable(GL_DEPTH_TEST);
-    gl_.PointSize(7.0f);
+    gl_.PointSize(static_cast<GLfloat>(list.contactPixels));
     setColour(list.contactColour);
     gl_.Begin(GL_POINTS);
     for (const Vec3& p : list.contacts) gl_.Vertex3d(p.x, p.y, p.z);

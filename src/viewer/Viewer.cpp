@@ -30,6 +30,7 @@ constexpr double kZoomStep = 0.9;
 constexpr double kSlowMotion = 0.25;
 void* const kFont = GLUT_BITMAP_9_BY_15;
 constexpr int kLineHeight = 17;  // pixels
+constexpr double kEscSeconds = 1.5;  // between the two presses of Esc that quit
 
 // The open window: the session it shows and what the mouse is doing.
 class Window {
@@ -64,6 +65,7 @@ class Window {
   enum class Drag { Still, Orbit, Pan } drag_ = Drag::Still;
   int dragX_ = 0, dragY_ = 0;
   bool help_ = false;
+  std::chrono::steady_clock::time_point escPressed_{};
   bool screenshotDue_ = false;
   int screenshots_ = 0;
 };
@@ -71,7 +73,9 @@ class Window {
 Window& self(void* data) { return *static_cast<Window*>(data); }
 
 void Window::open() {
-  glutInitDisplayMode(GLUT_RGBA | GLUT_DOUBLE | GLUT_DEPTH | GLUT_STENCIL);
+  // Multisampled (anti-aliased) where the display offers it.
+  glutSetOption(GLUT_MULTISAMPLE, 4);
+  glutInitDisplayMode(GLUT_RGBA | GLUT_DOUBLE | GLUT_DEPTH | GLUT_STENCIL | GLUT_MULTISAMPLE);
   glutInitWindowSize(width_, height_);
   glutSetOption(GLUT_ACTION_ON_WINDOW_CLOSE, GLUT_ACTION_GLUTMAINLOOP_RETURNS);
   const std::string title = "tabletop: " + session_.scenario().name + " (" +
@@ -80,6 +84,7 @@ void Window::open() {
   gl_ = GlFunctions::load([](const char* name) { return reinterpret_cast<void*>(glutGetProcAddress(name)); });
   windowPos_ = reinterpret_cast<void (*)(GLint, GLint)>(glutGetProcAddress("glWindowPos2i"));
   renderer_ = std::make_unique<GlRenderer>(gl_);
+  gl_.Enable(GL_MULTISAMPLE);
 
   glutDisplayFuncUcall([](void* d) { self(d).display(); }, this);
   glutReshapeFuncUcall([](int w, int h, void* d) { self(d).reshape(w, h); }, this);
@@ -141,7 +146,7 @@ void Window::display() {
 }
 
 void Window::drawOverlay() {
-  std::vector<std::string> lines = session_.overlay();
+  std::vector<std::string> lines = session_.overlay(static_cast<std::size_t>(std::max(4, (height_ - 10) / kLineHeight)));
   if (help_) {
     lines.emplace_back("");
     for (const std::string& h : ViewerSession::help()) lines.push_back(h);
@@ -212,7 +217,24 @@ void Window::key(unsigned char key, int, int) {
     case 'z': case 'Z': session_.camera().zoom(kZoomStep); break;
     case 'x': case 'X': session_.camera().zoom(1.0 / kZoomStep); break;
     case 'h': case 'H': help_ = !help_; break;
-    case 'q': case 'Q': case 27: glutLeaveMainLoop(); break;
+    case 'f': case 'F': session_.fitCamera(double(width_) / height_); break;
+    case 't': case 'T': session_.toggleFollow(); break;
+    case '\t': session_.nextEntity(); break;
+    case 'i': case 'I': session_.toggleOverlay(); break;
+    case 'l': case 'L': session_.toggleEntityList(); break;
+    case 'q': case 'Q': glutLeaveMainLoop(); break;
+    case 27: {
+      // freeglut passes on the Esc that closes the right-button menu, so
+      // Esc quits only when pressed twice within kEscSeconds.
+      const auto now = std::chrono::steady_clock::now();
+      if (std::chrono::duration<double>(now - escPressed_).count() < kEscSeconds) {
+        glutLeaveMainLoop();
+      } else {
+        escPressed_ = now;
+        session_.showMessage("Esc again quits (Q quits at once)");
+      }
+      break;
+    }
     default: break;
   }
   glutPostRedisplay();

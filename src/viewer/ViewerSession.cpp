@@ -30,7 +30,6 @@ ViewerSession::ViewerSession(Scenario scenario, Settings settings, ViewerSetting
     : scenario_(std::move(scenario)), settings_(settings), viewer_(std::move(viewer)) {
   noScript_ = scenario_;
   noScript_.script.clear();
-  camera_ = Camera::named(viewer_.camera, scenario_.table).value_or(Camera{});
   // The arrow starts where the script first pushes, else on the first
   // entity's Left face; G's step is the script's first step.
   step_ = viewer_.step.value_or(kDefaultStep);
@@ -47,6 +46,17 @@ ViewerSession::ViewerSession(Scenario scenario, Settings settings, ViewerSetting
     if (hasFaces(scenario_.entities.front().geometry.kind())) arrow_.face = DirectionDef::Left;
   }
   build(viewer_.playScript);
+  // The camera (the command has checked the choice against the scene).
+  const auto parsed = CameraChoice::parse(viewer_.camera);
+  if (const auto* why = std::get_if<std::string>(&parsed)) throw std::invalid_argument("camera: " + *why);
+  const CameraChoice& choice = std::get<CameraChoice>(parsed);
+  if (const std::string problem = choice.problemWith(scenario_); !problem.empty()) {
+    throw std::invalid_argument("camera: " + problem);
+  }
+  SceneExtent now;
+  now.add(sceneBounds(scenario_, simulation_->snapshot()));
+  camera_ = cameraFor(choice, scenario_, simulation_->snapshot(), now, viewer_.aspect);
+  if (choice.kind == CameraChoice::Kind::Follow) followed_ = choice.name;
 }
 
 void ViewerSession::build(bool playScript) {
@@ -82,6 +92,41 @@ void ViewerSession::cycleArrow() {
   } else {
     arrow_.angleDegrees = kAngles[slot];
   }
+  message_ = "arrow on " + arrowText();
+}
+
+void ViewerSession::fitCamera(double aspect) {
+  SceneExtent now;
+  now.add(sceneBounds(scenario_, simulation_->snapshot()));
+  camera_.fit(now.corners(), aspect);
+  camera_.farPlane = std::max(camera_.farPlane, 4.0 * camera_.distance);
+  followed_.clear();
+  message_ = "view fitted to the scene";
+}
+
+void ViewerSession::toggleFollow() {
+  followed_ = followed_.empty() ? arrow_.entity : std::string();
+  message_ = followed_.empty() ? "camera stays" : "camera follows " + followed_;
+  followCamera();
+}
+
+void ViewerSession::followCamera() {
+  if (followed_.empty()) return;
+  for (const EntityState& s : simulation_->snapshot()) {
+    if (s.name == followed_) camera_.target = s.position;
+  }
+}
+
+void ViewerSession::nextEntity() {
+  const auto& entities = scenario_.entities;
+  if (entities.empty()) return;
+  std::size_t i = 0;
+  while (i < entities.size() && entities[i].name != arrow_.entity) ++i;
+  i = i == entities.size() ? 0 : (i + 1) % entities.size();
+  arrow_ = Arrow{};
+  arrow_.entity = entities[i].name;
+  if (hasFaces(entities[i].geometry.kind())) arrow_.face = kFaces[0];
+  if (!followed_.empty()) followed_ = arrow_.entity, followCamera();
   message_ = "arrow on " + arrowText();
 }
 
@@ -155,6 +200,7 @@ void ViewerSession::advance(double wallSeconds) {
     pushesSeen_ = player_->pushes();
     if (const auto a = player_->arrow()) arrow_ = *a;
   }
+  followCamera();
   windowWall_ += wallSeconds;
   windowSim_ += simulation_->time() - before;
   if (windowWall_ >= kRateWindow) {
@@ -176,19 +222,37 @@ std::string ViewerSession::arrowText() const {
   return arrow_.entity + ", angle " + fixed(arrow_.angleDegrees, 0) + " deg";
 }
 
-std::vector<std::string> ViewerSession::overlay() const {
+std::string ViewerSession::entityLine(const EntityState& s) const {
+  return "  " + s.name + "  " + std::string(toString(s.status)) + "  (" + fixed(s.position.x, 3) + ", " +
+         fixed(s.position.y, 3) + ", " + fixed(s.position.z, 3) + ") m  on " + s.support.name();
+}
+
+std::vector<std::string> ViewerSession::overlay(std::size_t maxLines) const {
   std::vector<std::string> lines;
-  lines.push_back(scenario_.name + "   mode " + std::string(simulation_->modeName()) + "   (H: help)");
+  if (!overlayShown_) return lines;
+  maxLines = std::max<std::size_t>(maxLines, 4);
+  lines.push_back(scenario_.name + "   mode " + std::string(simulation_->modeName()) + "   (H: help, I: hide)");
   std::string timing = "t " + fixed(simulation_->time(), 3) + " s   real-time x" + fixed(realTimeFactor_, 2);
   if (speed_ != 1.0) timing += "   speed x" + fixed(speed_, speed_ < 0.1 ? 4 : 2);
   if (paused_) timing += "   PAUSED";
+  if (!followed_.empty()) timing += "   following " + followed_;
   lines.push_back(timing);
   lines.push_back("arrow: " + arrowText() + ", step " + fixed(step_, 3) + " m" + (arrowVisible_ ? "" : " (hidden)") +
                   "   +/- turn " +
                   (rotationTarget_ == RotationTarget::TableAndEntities ? "table and entities" : "entities on the table"));
-  for (const EntityState& s : simulation_->snapshot()) {
-    lines.push_back("  " + s.name + "  " + std::string(toString(s.status)) + "  (" + fixed(s.position.x, 3) + ", " +
-                    fixed(s.position.y, 3) + ", " + fixed(s.position.z, 3) + ") m  on " + s.support.name());
+  const std::vector<EntityState> states = simulation_->snapshot();
+  const std::size_t room = maxLines - lines.size() - (message_.empty() ? 0 : 1);
+  if (entityList_) {
+    // Every entity that fits, the last line saying how many do not.
+    const std::size_t shown = states.size() <= room ? states.size() : room - 1;
+    for (std::size_t i = 0; i < shown; ++i) lines.push_back(entityLine(states[i]));
+    if (shown < states.size()) lines.push_back("  ... " + std::to_string(states.size() - shown) + " more (L: fewer)");
+  } else {
+    for (const EntityState& s : states) {
+      if (s.name == arrow_.entity) lines.push_back(entityLine(s));
+    }
+    lines.push_back("  " + std::to_string(states.size()) + (states.size() == 1 ? " entity" : " entities") +
+                    " (L: list them)");
   }
   if (!message_.empty()) lines.push_back("> " + message_);
   return lines;
@@ -204,9 +268,12 @@ std::vector<std::string> ViewerSession::help() {
       "S      slow motion x1/4      [ ]  slower / faster",
       "R      reset                 Enter  reset and play the script",
       "Z X    zoom in / out         F12  screenshot (PNG)",
+      "F      fit the scene in view T  follow the arrowed entity",
+      "Tab    arrow to the next entity",
+      "I      overlay on/off        L  list every entity",
       "mouse  left drag: orbit; middle or Shift+left drag: pan; wheel: zoom",
       "       right button: the report's menu",
-      "H      this help             Q Esc  quit",
+      "H      this help             Q Esc  quit (Esc first closes a menu)",
   };
 }
 

@@ -8,6 +8,7 @@
 #include "core/Arrow.h"
 #include "core/SimulationMode.h"
 #include "draw/Camera.h"
+#include "draw/CameraChoice.h"
 #include "draw/DrawList.h"
 #include "scenario/Scenario.h"
 #include "sim/ScriptPlayer.h"
@@ -25,7 +26,8 @@ struct ViewerSettings {
   SimulationMode mode = SimulationMode::Bullet;
   bool playScript = true;           ///< play the scenario's script from the start
   std::optional<double> step;       ///< G's step, metres; else the script's first step, else 0.2
-  std::string camera = "front";     ///< a Camera::named view
+  std::string camera = "fit";       ///< a CameraChoice (fit, a preset, follow:NAME, an eye and target)
+  double aspect = 4.0 / 3.0;        ///< the window's width over its height, for fitting
   double rotationDegrees = 15.0;    ///< one press of + or -
 };
 
@@ -40,7 +42,8 @@ struct ViewerSettings {
 /// scripted pushes take.
 class ViewerSession {
  public:
-  /// Throws ScenarioError for a scene the mode refuses.
+  /// Throws ScenarioError for a scene the mode refuses, and
+  /// std::invalid_argument for a camera the scene cannot have.
   ViewerSession(Scenario scenario, Settings settings, ViewerSettings viewer);
   ViewerSession(const ViewerSession&) = delete;  // the script player holds on to the scenario
   ViewerSession& operator=(const ViewerSession&) = delete;
@@ -83,6 +86,24 @@ class ViewerSession {
   /// at once, so a slow machine falls behind instead of freezing).
   void advance(double wallSeconds);
 
+  // The camera.
+  /// F: keeps the view's direction and fits the table and every entity as
+  /// they are now into a view of `aspect`.
+  void fitCamera(double aspect);
+  /// T: the camera's target follows the arrowed entity (or stops following).
+  void toggleFollow();
+  /// The entity the camera follows, or "" when none.
+  const std::string& followed() const { return followed_; }
+  /// Tab: the arrow to the next entity (its first face).
+  void nextEntity();
+
+  // The overlay.
+  /// I: the overlay on or off.
+  void toggleOverlay() { overlayShown_ = !overlayShown_; }
+  bool overlayShown() const { return overlayShown_; }
+  /// L: every entity's line in the overlay, or only the arrowed one's.
+  void toggleEntityList() { entityList_ = !entityList_; }
+
   Camera& camera() { return camera_; }
   const Camera& camera() const { return camera_; }
   const Scenario& scenario() const { return scenario_; }
@@ -95,9 +116,11 @@ class ViewerSession {
 
   /// The frame to draw now.
   DrawList drawList() const;
-  /// The overlay's lines: scene, time and speed, the arrow, each entity's
-  /// status, and the last message.
-  std::vector<std::string> overlay() const;
+  /// The overlay's lines, at most `maxLines` (at least 4): scene, time and
+  /// speed, the arrow, the arrowed entity's status and the entity count
+  /// (every entity's with L, cut to fit with "... N more"), and the last
+  /// message. Empty when hidden.
+  std::vector<std::string> overlay(std::size_t maxLines) const;
   /// The keys and the mouse, one line each.
   static std::vector<std::string> help();
 
@@ -106,6 +129,9 @@ class ViewerSession {
   /// One step of the player; on divergence, pauses and says why.
   bool stepOnce();
   std::string arrowText() const;
+  std::string entityLine(const EntityState& s) const;
+  /// Puts the camera's target on the followed entity, if any.
+  void followCamera();
 
   Scenario scenario_;
   Scenario noScript_;  // the scene without its script
@@ -123,6 +149,9 @@ class ViewerSession {
   bool diverged_ = false;
   double speed_ = 1.0;
   bool contacts_ = false;
+  std::string followed_;
+  bool overlayShown_ = true;
+  bool entityList_ = false;
   double budget_ = 0.0;  // simulated seconds owed to the wall clock
   double windowWall_ = 0.0, windowSim_ = 0.0;
   double realTimeFactor_ = 0.0;

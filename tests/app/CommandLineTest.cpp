@@ -503,11 +503,11 @@ TEST(CommandLine, RenderWritesStillsOfTheSizeAsked) {
 }
 
 // Frames at --fps from 0 to the end of the run and half a second more,
-// encoded into a GIF and an MP4 by ffmpeg.
+// encoded into a GIF (frames kept with --keep-frames) and an MP4.
 TEST(CommandLine, RenderMakesFramesAndVideos) {
   const std::string dir = freshDir("tabletop_render_video");
   Outcome o = run(kBin + "tabletop render " + kScenarios + "example2_two_cubes.json --out " + dir +
-                  " --fps 10 --size 160x120 --video " + dir + "/ex2.gif");
+                  " --fps 10 --size 160x120 --keep-frames --video " + dir + "/ex2.gif");
   ASSERT_EQ(o.status, 0) << o.err;
   // Frames every 0.1 s from 0 to where the run ends (everything at rest)
   // and half a second more.
@@ -524,6 +524,7 @@ TEST(CommandLine, RenderMakesFramesAndVideos) {
   gif.read(magic.data(), 6);
   EXPECT_EQ(magic, "GIF89a");
 
+  // Without --keep-frames the frames go once the video is made.
   o = run(kBin + "tabletop render " + kScenarios + "example2_two_cubes.json --out " + dir +
           " --fps 10 --size 161x121 --video " + dir + "/ex2.mp4");
   ASSERT_EQ(o.status, 0) << o.err;
@@ -531,8 +532,59 @@ TEST(CommandLine, RenderMakesFramesAndVideos) {
   std::string box(8, '\0');
   mp4.read(box.data(), 8);
   EXPECT_EQ(box.substr(4), "ftyp") << "not an MP4 file";
+  EXPECT_TRUE(filesIn(dir, ".png").empty());
   EXPECT_FALSE(hasPartFiles(dir));
   std::filesystem::remove_all(dir);
+}
+
+// A video alone needs no --out: the frames go to a private temporary
+// folder that is gone afterwards; --keep-frames needs a folder to keep
+// them in.
+TEST(CommandLine, RenderMakesAVideoAloneAndLeavesNoFrames) {
+  const std::string dir = freshDir("tabletop_render_video_alone");
+  const std::string tmp = dir + "/tmp";
+  std::filesystem::create_directories(tmp);
+  const Outcome o = run("env TMPDIR=" + tmp + " " + kBin + "tabletop render " + kScenarios +
+                        "example1_single_cube.json --fps 5 --size 80x60 --video " + dir + "/a.gif");
+  ASSERT_EQ(o.status, 0) << o.err;
+  EXPECT_TRUE(std::filesystem::exists(dir + "/a.gif"));
+  EXPECT_TRUE(std::filesystem::is_empty(tmp)) << "the temporary frames are removed";
+  EXPECT_EQ(o.out.find(" in "), std::string::npos) << o.out;
+  const Outcome keep = run(kBin + "tabletop render " + kScenarios + "example1_single_cube.json --fps 5 --video " +
+                           dir + "/b.gif --keep-frames");
+  EXPECT_EQ(keep.status, 2);
+  EXPECT_EQ(lineCount(keep.err), 1) << keep.err;
+  EXPECT_NE(keep.err.find("--keep-frames: expected --out DIR"), std::string::npos) << keep.err;
+  const Outcome none = run(kBin + "tabletop render " + kScenarios + "example1_single_cube.json --fps 5");
+  EXPECT_EQ(none.status, 2);
+  EXPECT_NE(none.err.find("--out: expected a folder for the frames"), std::string::npos) << none.err;
+  const Outcome noFfmpeg = run("env PATH=/nonexistent " + kBin + "tabletop render " + kScenarios +
+                               "example1_single_cube.json --fps 5 --video " + dir + "/c.gif");
+  EXPECT_EQ(noFfmpeg.status, 1);
+  EXPECT_EQ(lineCount(noFfmpeg.err), 1) << noFfmpeg.err;
+  EXPECT_NE(noFfmpeg.err.find("ffmpeg is not installed"), std::string::npos) << noFfmpeg.err;
+  std::filesystem::remove_all(dir);
+}
+
+// Every --camera form renders; follow names an entity of the scene, and
+// a wrong form or name is refused in one line before anything is made.
+TEST(CommandLine, RenderTakesEveryCameraForm) {
+  const std::string dir = freshDir("tabletop_render_cameras");
+  for (const std::string camera : {"fit", "corner", "follow:B", "2,1.5,3:0,0.75,0"}) {
+    const Outcome o = run(kBin + "tabletop render " + kScenarios + "example2_two_cubes.json --out " + dir +
+                          " --at 0 --size 80x60 --camera " + camera);
+    EXPECT_EQ(o.status, 0) << camera << ": " << o.err;
+    EXPECT_NE(o.out.find("(camera " + camera + ","), std::string::npos) << o.out;
+  }
+  std::filesystem::remove_all(dir);
+  for (const std::string camera : {"follow:C", "ceiling", "1,2,3:1,2,3"}) {
+    const Outcome o = run(kBin + "tabletop render " + kScenarios + "example2_two_cubes.json --out " + dir +
+                          " --at 0 --camera " + camera);
+    EXPECT_EQ(o.status, 2) << camera;
+    EXPECT_EQ(lineCount(o.err), 1) << o.err;
+    EXPECT_NE(o.err.find("--camera"), std::string::npos) << o.err;
+    EXPECT_FALSE(std::filesystem::exists(dir)) << camera;
+  }
 }
 
 // Without ffmpeg the frames are still made, and one line says why there is

@@ -165,16 +165,90 @@ TEST(ViewerSession, PauseSingleStepAndSlowMotion) {
   EXPECT_LE(s.simulation().time() - t1, 0.25 + dt);
 }
 
+std::string joined(const std::vector<std::string>& lines) {
+  std::string all;
+  for (const std::string& line : lines) all += line + "\n";
+  return all;
+}
+
+// The overlay names the arrowed entity and counts the rest; L lists every
+// one; I hides it all.
 TEST(ViewerSession, OverlaySaysTimeModeArrowAndStatuses) {
   const Scenario scenario = example("example2_two_cubes");
   ViewerSession s(scenario, scenario.settings, still(SimulationMode::Rules));
-  std::string all;
-  for (const std::string& line : s.overlay()) all += line + "\n";
+  std::string all = joined(s.overlay(40));
   EXPECT_NE(all.find("mode rules"), std::string::npos) << all;
   EXPECT_NE(all.find("t 0.000 s"), std::string::npos) << all;
   EXPECT_NE(all.find("arrow: A, Left face, step 0.880 m"), std::string::npos) << all;
   EXPECT_NE(all.find("A  OnTable"), std::string::npos) << all;
+  EXPECT_EQ(all.find("B  OnTable"), std::string::npos) << all;
+  EXPECT_NE(all.find("2 entities (L: list them)"), std::string::npos) << all;
+  s.toggleEntityList();
+  all = joined(s.overlay(40));
+  EXPECT_NE(all.find("A  OnTable"), std::string::npos) << all;
   EXPECT_NE(all.find("B  OnTable"), std::string::npos) << all;
+  s.toggleOverlay();
+  EXPECT_TRUE(s.overlay(40).empty());
+}
+
+// With the 55-cube pyramid listed, the overlay keeps to the lines the
+// window has and says how many entities it leaves out.
+TEST(ViewerSession, OverlayFitsAnyNumberOfEntities) {
+  const Scenario scenario = ScenarioLoader::loadFile(std::string(TABLETOP_SOURCE_DIR) + "/scenarios/hard/pyramid_55.json");
+  ViewerSession s(scenario, scenario.settings, still(SimulationMode::Rules));
+  EXPECT_LE(s.overlay(40).size(), 6u) << "without L: the arrowed entity and a count";
+  s.toggleEntityList();
+  for (std::size_t most : {4u, 10u, 30u}) {
+    const std::vector<std::string> lines = s.overlay(most);
+    EXPECT_EQ(lines.size(), most);
+    EXPECT_NE(joined(lines).find(" more (L: fewer)"), std::string::npos) << joined(lines);
+  }
+  EXPECT_EQ(s.overlay(100).size(), 3u + 55u) << "all of them when they fit";
+}
+
+// F fits the scene as it is now, keeping the direction; T makes the
+// camera's target follow the arrowed entity as it moves; Tab moves the
+// arrow (and a followed camera) to the next entity.
+TEST(ViewerSession, CameraFitsFollowsAndCycles) {
+  const Scenario scenario = example("example2_two_cubes");
+  ViewerSettings v = still();
+  v.camera = "corner";
+  ViewerSession s(scenario, scenario.settings, v);
+  const double yaw = s.camera().yawDegrees;
+  s.camera().zoom(10.0);
+  s.fitCamera(4.0 / 3.0);
+  EXPECT_DOUBLE_EQ(s.camera().yawDegrees, yaw);
+  for (const EntityState& e : s.simulation().snapshot()) {
+    const auto p = s.camera().project(e.position, 960, 720);
+    ASSERT_TRUE(p);
+    EXPECT_GT(p->column, 0.0);
+    EXPECT_LT(p->column, 960.0);
+    EXPECT_GT(p->row, 0.0);
+    EXPECT_LT(p->row, 720.0);
+  }
+  s.toggleFollow();
+  EXPECT_EQ(s.followed(), "A");
+  s.pushArrowed();
+  play(s, 1.0);
+  const Vec3 a = s.simulation().snapshot()[0].position;
+  EXPECT_LT((s.camera().target - a).length(), 1e-12) << "the target is A's centre";
+  s.nextEntity();
+  EXPECT_EQ(s.arrow().entity, "B");
+  EXPECT_EQ(s.followed(), "B");
+  EXPECT_LT((s.camera().target - s.simulation().snapshot()[1].position).length(), 1e-12);
+  s.toggleFollow();
+  EXPECT_EQ(s.followed(), "");
+}
+
+// A camera that follows an entity the scene does not have is refused.
+TEST(ViewerSession, FollowingNoEntityIsRefused) {
+  const Scenario scenario = example("example2_two_cubes");
+  ViewerSettings v = still();
+  v.camera = "follow:C";
+  EXPECT_THROW(ViewerSession(scenario, scenario.settings, v), std::invalid_argument);
+  v.camera = "follow:B";
+  ViewerSession s(scenario, scenario.settings, v);
+  EXPECT_EQ(s.followed(), "B");
 }
 
 // The rules refuse pushes the report's algorithm cannot make; the viewer
@@ -184,7 +258,7 @@ TEST(ViewerSession, ARefusedPushIsAMessage) {
   ViewerSession s(scenario, scenario.settings, still(SimulationMode::Rules));
   s.pushArrowed();
   s.pushArrowed();  // A is still moving from the first
-  EXPECT_NE(s.overlay().back().find("cannot push"), std::string::npos) << s.overlay().back();
+  EXPECT_NE(s.overlay(40).back().find("cannot push"), std::string::npos) << s.overlay(40).back();
 }
 
 // A scene that diverges pauses the viewer with the reason instead of
@@ -201,7 +275,7 @@ TEST(ViewerSession, DivergencePausesWithTheReasonUntilReset) {
   EXPECT_TRUE(s.diverged());
   EXPECT_TRUE(s.paused());
   EXPECT_DOUBLE_EQ(s.simulation().time(), 0.1);
-  const std::vector<std::string> lines = s.overlay();
+  const std::vector<std::string> lines = s.overlay(40);
   bool said = false;
   for (const std::string& line : lines) said = said || line.find("diverged at t = 0.1 s: entity 'A'") != std::string::npos;
   EXPECT_TRUE(said);
