@@ -9,6 +9,7 @@
 #include "app/CompareCommand.h"
 #include "app/DataPaths.h"
 #include "app/OptionChecks.h"
+#include "app/PlainHelp.h"
 #include "app/RenderCommand.h"
 #include "app/RunCommand.h"
 #include "app/ViewCommand.h"
@@ -36,6 +37,7 @@ int main(int argc, char** argv) {
   CLI::App app{
       "tabletop: the table-top scenes of S. Zou's report \"The Design of a 3D-Object Simulator\n"
       "Using Open-GL\" (Concordia, 2001) simulated with Bullet rigid-body physics."};
+  app.formatter(std::make_shared<PlainHelp>());
   app.require_subcommand(1);
   app.set_version_flag("--version", versionLine(), "Print the version, the Bullet build (float or double) and where the shipped files are, then exit");
   int status = kExitOk;

@@ -601,6 +601,21 @@ TEST(CommandLine, RenderWithoutFfmpegKeepsTheFrames) {
   std::filesystem::remove_all(dir);
 }
 
+// --help speaks in words: values as NUMBER, INTEGER, TEXT or their
+// choices with their ranges, none of CLI11's internal forms.
+TEST(CommandLine, HelpIsPlainWords) {
+  for (const std::string command : {"run", "compare", "view", "render", "bench"}) {
+    const Outcome o = run(kBin + "tabletop " + command + " --help");
+    EXPECT_EQ(o.status, 0) << command;
+    for (const std::string raw : {"{false}", "{true}", "FLOAT", "INT:", "INT in", "ENUM", "TEXT:", "->"}) {
+      EXPECT_EQ(o.out.find(raw), std::string::npos) << command << " shows '" << raw << "':\n" << o.out;
+    }
+  }
+  const Outcome render = run(kBin + "tabletop render --help");
+  EXPECT_NE(render.out.find("--timestep NUMBER from 1e-05 to 0.1"), std::string::npos) << render.out;
+  EXPECT_NE(render.out.find("--iterations INTEGER from 1 to 10000"), std::string::npos) << render.out;
+}
+
 TEST(CommandLine, RenderRefusesBadOptionsInOneLine) {
   const std::string dir = freshDir("tabletop_render_bad");
   const std::string base = kBin + "tabletop render " + kScenarios + "example1_single_cube.json --out " + dir;
