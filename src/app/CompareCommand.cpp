@@ -1,9 +1,11 @@
 #include "app/CompareCommand.h"
 
+#include <cmath>
 #include <iostream>
 
 #include "app/GnuplotFile.h"
 #include "app/InterruptGuard.h"
+#include "app/Progress.h"
 #include "app/TrajectoryPlot.h"
 #include "scenario/ScenarioError.h"
 #include "sim/ModeComparison.h"
@@ -24,8 +26,13 @@ int compareScenario(const CompareOptions& options, std::ostream& out, std::ostre
   Scenario scenario;
   try {
     scenario = loadScenario(source, options.run);
-    comparison = compareModes(scenario, scenario.settings, [&interrupt](const Simulation&) {
+    // The bar counts the steps of the three runs up to their duration.
+    Progress progress(err);
+    progress.start(3 * std::lround(scenario.settings.duration / scenario.settings.timestep));
+    long steps = 0;
+    comparison = compareModes(scenario, scenario.settings, [&](const Simulation&) {
       interrupt.throwIfRequested();
+      progress.set(++steps, "three modes");
     });
   } catch (const ScenarioError& e) {
     for (const std::string& line : e.lines()) err << line << "\n";

@@ -35,18 +35,18 @@ void Progress::say(const std::string& what) {
 
 void Progress::start(long total) { total_ = std::max(total, done_); }
 
-void Progress::advance(const std::string& what) {
-  ++done_;
+void Progress::set(long done, const std::string& what) {
+  done_ = done;
   total_ = std::max(total_, done_);
   if (!shown_) return;
   const auto now = std::chrono::steady_clock::now();
-  if (done_ < total_ && std::chrono::duration<double>(now - drawn_).count() < kRedraw) return;
+  const double spent = std::chrono::duration<double>(now - started_).count();
+  if (spent < kFirstDraw || std::chrono::duration<double>(now - drawn_).count() < kRedraw) return;
   drawn_ = now;
   drawnAny_ = true;
-  const double spent = std::chrono::duration<double>(now - started_).count();
-  const int filled = static_cast<int>(kWidth * done_ / total_);
+  const int filled = static_cast<int>(kWidth * done_ / std::max(1L, total_));
   err_ << "\r[" << std::string(filled, '#') << std::string(kWidth - filled, ' ') << "] " << done_ << "/" << total_;
-  if (done_ < total_) err_ << ", " << duration(spent / done_ * (total_ - done_)) << " left";
+  if (done_ > 0 && done_ < total_) err_ << ", " << duration(spent / done_ * (total_ - done_)) << " left";
   err_ << " " << what << "\033[K" << std::flush;
 }
 

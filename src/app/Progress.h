@@ -7,11 +7,12 @@
 namespace tabletop {
 
 /// A bar on standard error, redrawn in place with what is done and an
-/// estimate of the time left, when standard error is a terminal; silent
-/// otherwise (a log or a pipe gets no control characters). Cleared when
-/// it goes.
+/// estimate of the time left, when standard error is a terminal and the
+/// work has taken kFirstDraw seconds; silent otherwise (a log or a pipe gets
+/// no control characters, a quick command no flicker). Cleared when it goes.
 class Progress {
  public:
+  static constexpr double kFirstDraw = 0.5;  // seconds
   explicit Progress(std::ostream& err);
   Progress(const Progress&) = delete;
   Progress& operator=(const Progress&) = delete;
@@ -20,7 +21,9 @@ class Progress {
   /// How many steps the work has; may be set again as the estimate changes.
   void start(long total);
   /// One step done; `what` names it.
-  void advance(const std::string& what);
+  void advance(const std::string& what) { set(done_ + 1, what); }
+  /// `done` steps done; `what` names the work.
+  void set(long done, const std::string& what);
   /// Shows `what` alone, for work that cannot count its steps.
   void say(const std::string& what);
 

@@ -1,5 +1,6 @@
 #include "app/RunCommand.h"
 
+#include <cmath>
 #include <exception>
 #include <iostream>
 #include <map>
@@ -9,6 +10,7 @@
 
 #include "app/DataPaths.h"
 #include "app/InterruptGuard.h"
+#include "app/Progress.h"
 #include "app/OptionChecks.h"
 #include "io/AtomicFile.h"
 #include "scenario/ScenarioError.h"
@@ -60,7 +62,7 @@ void addRunOptions(CLI::App& command, RunOptions& options, bool withMode) {
                      "--timestep, --iterations and --integrator override it)")
       ->check(finiteRange(1e-9, 1.0));
   command.add_option("--front", options.frontFile,
-                     "The front --tolerance reads (default: the shipped data/tolerance_front.json; made by tabletop bench --front)");
+                     "The front --tolerance reads (default: the shipped data/tolerance_front.json; made by tabletop bench --write-front)");
   command.add_option("--duration", options.duration, "Longest simulated time in seconds (overrides the scenario)")
       ->check(finiteRange(1e-9, 3600.0));
 }
@@ -121,9 +123,15 @@ int runScenarios(const RunOptions& options, std::ostream& out, std::ostream& err
         if (options.duration) warnCutScript(scenario, settings, warnings);
         for (const std::string& line : warnings) err << line << "\n";
         std::unique_ptr<Simulation> simulation = buildSimulation(scenario, settings, options.mode);
-        StepObserver observer = [&interrupt](const Simulation&) {
+        // The bar counts steps up to the duration; a run that comes to rest ends sooner.
+        Progress progress(err);
+        progress.start(std::lround(settings.duration / settings.timestep));
+        long steps = 0;
+        const auto tick = [&interrupt, &progress, &steps, name = shownText(scenario.name)](const Simulation&) {
           interrupt.throwIfRequested();
+          progress.set(++steps, name);
         };
+        StepObserver observer = tick;
         if (options.traceFile) {
           std::vector<std::string> names;
           for (const EntitySpec& e : scenario.entities) names.push_back(e.name);
@@ -133,8 +141,8 @@ int runScenarios(const RunOptions& options, std::ostream& out, std::ostream& err
             return kExitFailure;
           }
           trace->record(*simulation);
-          observer = [&interrupt, &trace](const Simulation& s) {
-            interrupt.throwIfRequested();
+          observer = [&tick, &trace](const Simulation& s) {
+            tick(s);
             trace->record(s);
           };
         }
