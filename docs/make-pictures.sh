@@ -10,7 +10,7 @@ trap 'rm -rf "$work"' EXIT
 # still NAME TIME: the example at TIME seconds, from render's default camera
 # (the report's direction, fitted to the scene), so a first render looks alike.
 still() {
-  "$tabletop" render "scenarios/$1.json" --out "$work/$1" --at "$2" --size 640x480
+  "$tabletop" render "scenarios/$1.json" --out-dir "$work/$1" --at "$2" --size 640x480
   cp "$work/$1/t_$(printf '%.3f' "$2").png" "docs/$1.png"
 }
 
@@ -23,7 +23,7 @@ still example4_two_spheres 1.0
 # The speed-against-error plot of the sliding cube: every rate, 10 and 50
 # iterations, both integrators.
 "$tabletop" bench scenarios/analytic/cube_slides_to_rest.json --repeats 5 --rates 30,60,120,240,1000,4000 \
-  --iterations 10,50 --out "$work/bench" > /dev/null
+  --iterations 10,50 --out-dir "$work/bench" > /dev/null
 cp "$work/bench/bench_cube_slides_to_rest.png" docs/bench_cube_slides_to_rest.png
 
 # compare's top view of the misaligned cubes in the three modes.

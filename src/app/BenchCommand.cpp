@@ -63,8 +63,8 @@ void addBenchOptions(CLI::App& command, BenchOptions& options) {
                      "Scenes to measure (default: scenarios/analytic/*.json and the report's examples)");
   command.add_option("--scenarios", options.scenarioDir, "Where the default scenes are (default: the shipped ones)");
   command.add_option("--cases", options.cases, "Only scenes whose name contains PATTERN");
-  command.add_option("--out", options.outDir, "Write DIR/bench.csv and DIR/bench_SCENE.png (log-log plots)");
-  command.add_option("--front", options.frontFile,
+  command.add_option("--out-dir", options.outDir, "Write DIR/bench.csv and DIR/bench_SCENE.png (log-log plots)");
+  command.add_option("--write-front", options.frontFile,
                      "Write the analytic cases' full-physics fronts to FILE, for run --tolerance "
                      "(the shipped one is data/tolerance_front.json)");
   command.add_flag("--json", options.json, "Print the measurements as JSON instead of tables");
@@ -225,7 +225,7 @@ int runBench(const BenchOptions& asked, std::ostream& out, std::ostream& err) {
   if (options.frontFile && sweepAsked && !interrupt.requested()) {
     if (const std::string problem = AtomicFile::write(*options.frontFile, ToleranceFront::fromBench(points).toJson());
         !problem.empty()) {
-      err << "tabletop bench: --front: " << problem << "\n";
+      err << "tabletop bench: --write-front: " << problem << "\n";
       status = kExitFailure;
     }
   }

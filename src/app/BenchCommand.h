@@ -20,7 +20,7 @@ struct BenchOptions {
   std::string scenarioDir;  ///< --scenarios: where the default scenes are; empty: the shipped ones
   std::optional<std::string> cases;    ///< --cases: only scenes whose name contains this
   std::optional<std::string> outDir;   ///< --out: CSV and plots
-  std::optional<std::string> frontFile;  ///< --front: the analytic cases' fronts, for run --tolerance
+  std::optional<std::string> frontFile;  ///< --write-front: the analytic cases' fronts, for run --tolerance
   bool json = false;
   int repeats = 5;                     ///< timed runs per setting, after one warm-up
   std::vector<double> rates{30, 60, 120, 240, 480, 1000, 2000, 4000};  ///< Hz
@@ -47,7 +47,7 @@ void addBenchOptions(CLI::App& command, BenchOptions& options);
 /// setting, the median wall time per simulated second of `repeats` runs
 /// (after a warm-up, with the spread) and the error (against the closed
 /// form, or against a run at 4000 Hz and 50 iterations). Prints a table
-/// per scene with its Pareto front of cost and error; with --out writes
+/// per scene with its Pareto front of cost and error; with --out-dir writes
 /// DIR/bench.csv and a log-log plot of error against cost per scene
 /// (DIR/bench_SCENE.png, one curve per iteration count). Ctrl-C stops the
 /// sweep, keeps what was measured and writes it (status 130).

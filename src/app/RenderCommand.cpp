@@ -163,7 +163,7 @@ std::optional<std::pair<int, int>> parseImageSize(const std::string& text) {
 }
 
 void addRenderOptions(CLI::App& command, RenderOptions& options) {
-  command.add_option("--out", options.outDir,
+  command.add_option("--out-dir", options.outDir,
                      "Folder for the PNG frames (made if missing); needed unless --video is given");
   CLI::Option* at = command.add_option("--at", options.at, "Stills at these simulated times, seconds (T1,T2,...)")
                         ->delimiter(',')
@@ -178,7 +178,7 @@ void addRenderOptions(CLI::App& command, RenderOptions& options) {
   CLI::Option* video =
       command.add_option("--video", options.video, "Encode the frames with ffmpeg into FILE.mp4 or FILE.gif")
           ->excludes(at);
-  command.add_flag("--keep-frames", options.keepFrames, "With --video, keep the frames in --out (default: removed)")
+  command.add_flag("--keep-frames", options.keepFrames, "With --video, keep the frames in --out-dir (default: removed)")
       ->needs(video);
   command.add_flag("!--no-arrow", options.arrow, "Hide the push arrow (the report's Push Direction Off)");
   command.add_flag("--contacts", options.contacts, "Draw contact points");
@@ -197,11 +197,11 @@ int renderScenario(const RenderOptions& options, std::ostream& out, std::ostream
   }
   const CameraChoice& camera = std::get<CameraChoice>(parsed);
   if (options.outDir.empty() && !options.video) {
-    err << "tabletop render: --out: expected a folder for the frames (or --video FILE for a video alone)\n";
+    err << "tabletop render: --out-dir: expected a folder for the frames (or --video FILE for a video alone)\n";
     return kExitBadInput;
   }
   if (options.keepFrames && options.outDir.empty()) {
-    err << "tabletop render: --keep-frames: expected --out DIR to keep them in\n";
+    err << "tabletop render: --keep-frames: expected --out-dir DIR to keep them in\n";
     return kExitBadInput;
   }
   if (options.video) {
@@ -210,7 +210,7 @@ int renderScenario(const RenderOptions& options, std::ostream& out, std::ostream
       return kExitBadInput;
     }
     if (options.outDir.empty() && !ffmpegAvailable()) {
-      err << "tabletop render: --video: ffmpeg is not installed (apt-get install ffmpeg); --out DIR writes the "
+      err << "tabletop render: --video: ffmpeg is not installed (apt-get install ffmpeg); --out-dir DIR writes the "
              "frames alone\n";
       return kExitFailure;
     }
@@ -260,7 +260,7 @@ int renderScenario(const RenderOptions& options, std::ostream& out, std::ostream
   std::error_code ec;
   std::filesystem::create_directories(frameDir, ec);
   if (ec || !std::filesystem::is_directory(frameDir)) {
-    err << "tabletop render: --out: cannot make the directory '" << shownText(frameDir) << "'"
+    err << "tabletop render: --out-dir: cannot make the directory '" << shownText(frameDir) << "'"
         << (ec ? ": " + ec.message() : std::string()) << "\n";
     return kExitFailure;
   }
@@ -271,7 +271,7 @@ int renderScenario(const RenderOptions& options, std::ostream& out, std::ostream
   // left then can only be a killed render's.
   const FolderLock lock(frameDir);
   if (!lock.held()) {
-    err << "tabletop render: --out: another render is writing into '" << shownText(frameDir) << "'\n";
+    err << "tabletop render: --out-dir: another render is writing into '" << shownText(frameDir) << "'\n";
     return kExitFailure;
   }
   if (const int removed = removeKilledTemporaries(dir); removed > 0) {

@@ -12,7 +12,7 @@ namespace tabletop {
 /// What `tabletop render` was asked to do.
 struct RenderOptions {
   RunOptions run;                     ///< one scenario, --mode and the setting overrides
-  std::string outDir;                 ///< --out: the frames' folder (none: a video alone)
+  std::string outDir;                 ///< --out-dir: the frames' folder (none: a video alone)
   std::vector<double> at;             ///< --at: stills at these simulated times, seconds
   double fps = 30.0;                  ///< --fps: frames per simulated second, when no --at
   std::string size = "960x720";       ///< --size WxH, pixels
@@ -30,13 +30,13 @@ void addRenderOptions(CLI::App& command, RenderOptions& options);
 /// OSMesa, no display needed: stills at the --at times (DIR/t_1.250.png),
 /// or every 1/fps simulated seconds from 0 until the run ends plus half a
 /// second (DIR/frame_00000.png, ...), then with --video encodes those with
-/// ffmpeg (without --out the frames go to a temporary folder; with --out
+/// ffmpeg (without --out-dir the frames go to a temporary folder; with --out-dir
 /// they are removed after encoding unless --keep-frames). The camera is
 /// fitted over the whole run unless --camera says otherwise. On a terminal
 /// a progress bar shows the frames, and a line the encoding. Statuses:
 /// kExitBadInput for a bad scenario or option; kExitFailure when a file
 /// cannot be written, OSMesa fails, or a video alone is asked for without
-/// ffmpeg. Without ffmpeg and with --out it says so in one line and keeps
+/// ffmpeg. Without ffmpeg and with --out-dir it says so in one line and keeps
 /// the frames (status 0).
 int renderScenario(const RenderOptions& options, std::ostream& out, std::ostream& err);
 

@@ -69,7 +69,7 @@ std::string ToleranceFront::toJson() const {
   }
   const nlohmann::json all = {
       {"version", 1},
-      {"made_by", "tabletop bench --modes bullet --front FILE"},
+      {"made_by", "tabletop bench --modes bullet --write-front FILE"},
       {"about", "per analytic case, the full-physics settings no other beats in both cost and error"},
       {"cases", cases}};
   return all.dump(2) + "\n";

@@ -25,7 +25,7 @@ struct ToleranceChoice {
 /// The bench's Pareto fronts of the analytic cases in full physics: for
 /// each case, the settings no other setting beats in both cost and error.
 /// It is shipped with the project (data/tolerance_front.json) and regenerated
-/// by `tabletop bench --modes bullet --front data/tolerance_front.json`.
+/// by `tabletop bench --modes bullet --write-front data/tolerance_front.json`.
 class ToleranceFront {
  public:
   struct Point {

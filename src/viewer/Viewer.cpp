@@ -307,7 +307,7 @@ std::string displayProblem() {
 
 std::string noDisplayMessage(const std::string& problem) {
   return "tabletop view: needs a display (" + problem +
-         "); to make pictures without one use: tabletop render SCENARIO --out DIR";
+         "); to make pictures without one use: tabletop render SCENARIO --out-dir DIR";
 }
 
 int runViewer(ViewerSession& session, const WindowSettings& settings, std::ostream& err) {

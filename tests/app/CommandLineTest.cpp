@@ -179,7 +179,7 @@ TEST(CommandLine, DivergenceIsStatusThreeAndMarkedIncomplete) {
   EXPECT_NE(j["failure"].get<std::string>().find("entity 'A'"), std::string::npos);
   const std::string dir = ::testing::TempDir() + "absurd_frames";
   std::filesystem::remove_all(dir);
-  o = run(kBin + "tabletop render " + path + " --out " + dir + " --at 0,0.5 --size 64x48");
+  o = run(kBin + "tabletop render " + path + " --out-dir " + dir + " --at 0,0.5 --size 64x48");
   EXPECT_EQ(o.status, 3);
   EXPECT_NE(o.err.find("diverged at t = 0.1 s"), std::string::npos) << o.err;
   EXPECT_NE(o.err.find("the 1 frame before it in"), std::string::npos) << o.err;
@@ -205,7 +205,7 @@ TEST(CommandLine, OverridesThatAskForTooManyStepsAreStatusTwo) {
 int interruptRender(const std::string& dir, int signal, std::string& err) {
   std::filesystem::remove_all(dir);
   const std::string errFile = dir + ".err";
-  const pid_t pid = start({"render", kScenarios + "example2_two_cubes.json", "--out", dir, "--fps", "400", "--size",
+  const pid_t pid = start({"render", kScenarios + "example2_two_cubes.json", "--out-dir", dir, "--fps", "400", "--size",
                            "160x120", "--video", dir + "/all.gif"},
                           errFile);
   for (int i = 0; i < 6000 && filesIn(dir, ".png").size() < 5; ++i) usleep(10000);
@@ -251,7 +251,7 @@ TEST(CommandLine, KilledRenderLeavesNoHalfWrittenFrame) {
   EXPECT_LE(left, 1u);
   // The next render into the folder removes what the killed one left, and
   // says so.
-  const Outcome o = runArgs({"render", kScenarios + "example1_single_cube.json", "--out", dir, "--at", "0",
+  const Outcome o = runArgs({"render", kScenarios + "example1_single_cube.json", "--out-dir", dir, "--at", "0",
                              "--size", "64x48"});
   EXPECT_EQ(o.status, 0) << o.err;
   EXPECT_EQ(o.err.find("removed 1 temporary file that a killed render left") != std::string::npos, left == 1)
@@ -314,7 +314,7 @@ TEST(CommandLine, BenchPrintsTheTableAndWritesCsvAndPlot) {
   const std::string dir = ::testing::TempDir() + "bench_out";
   std::filesystem::remove_all(dir);
   Outcome o = run(kBin + "tabletop bench --scenarios " + kScenarios +
-                  " --cases free_flight --repeats 1 --rates 60,240 --iterations 4,10 --out " + dir);
+                  " --cases free_flight --repeats 1 --rates 60,240 --iterations 4,10 --out-dir " + dir);
   ASSERT_EQ(o.status, 0) << o.err;
   EXPECT_NE(o.out.find("free_flight  (error against the closed form)"), std::string::npos) << o.out;
   EXPECT_NE(o.out.find("*"), std::string::npos) << o.out;
@@ -489,7 +489,7 @@ bool hasPartFiles(const std::string& dir) {
 // Stills at the times asked for, each a PNG of the size asked for.
 TEST(CommandLine, RenderWritesStillsOfTheSizeAsked) {
   const std::string dir = freshDir("tabletop_render_stills");
-  const Outcome o = run(kBin + "tabletop render " + kScenarios + "example2_two_cubes.json --out " + dir +
+  const Outcome o = run(kBin + "tabletop render " + kScenarios + "example2_two_cubes.json --out-dir " + dir +
                         " --at 1.6,0,0.5 --size 320x240 --camera corner --mode compat");
   ASSERT_EQ(o.status, 0) << o.err;
   EXPECT_NE(o.out.find("3 frames of 320x240 (camera corner, mode compat)"), std::string::npos) << o.out;
@@ -506,7 +506,7 @@ TEST(CommandLine, RenderWritesStillsOfTheSizeAsked) {
 // encoded into a GIF (frames kept with --keep-frames) and an MP4.
 TEST(CommandLine, RenderMakesFramesAndVideos) {
   const std::string dir = freshDir("tabletop_render_video");
-  Outcome o = run(kBin + "tabletop render " + kScenarios + "example2_two_cubes.json --out " + dir +
+  Outcome o = run(kBin + "tabletop render " + kScenarios + "example2_two_cubes.json --out-dir " + dir +
                   " --fps 10 --size 160x120 --keep-frames --video " + dir + "/ex2.gif");
   ASSERT_EQ(o.status, 0) << o.err;
   // Frames every 0.1 s from 0 to where the run ends (everything at rest)
@@ -525,7 +525,7 @@ TEST(CommandLine, RenderMakesFramesAndVideos) {
   EXPECT_EQ(magic, "GIF89a");
 
   // Without --keep-frames the frames go once the video is made.
-  o = run(kBin + "tabletop render " + kScenarios + "example2_two_cubes.json --out " + dir +
+  o = run(kBin + "tabletop render " + kScenarios + "example2_two_cubes.json --out-dir " + dir +
           " --fps 10 --size 161x121 --video " + dir + "/ex2.mp4");
   ASSERT_EQ(o.status, 0) << o.err;
   std::ifstream mp4(dir + "/ex2.mp4", std::ios::binary);
@@ -554,10 +554,10 @@ TEST(CommandLine, RenderMakesAVideoAloneAndLeavesNoFrames) {
                            dir + "/b.gif --keep-frames");
   EXPECT_EQ(keep.status, 2);
   EXPECT_EQ(lineCount(keep.err), 1) << keep.err;
-  EXPECT_NE(keep.err.find("--keep-frames: expected --out DIR"), std::string::npos) << keep.err;
+  EXPECT_NE(keep.err.find("--keep-frames: expected --out-dir DIR"), std::string::npos) << keep.err;
   const Outcome none = run(kBin + "tabletop render " + kScenarios + "example1_single_cube.json --fps 5");
   EXPECT_EQ(none.status, 2);
-  EXPECT_NE(none.err.find("--out: expected a folder for the frames"), std::string::npos) << none.err;
+  EXPECT_NE(none.err.find("--out-dir: expected a folder for the frames"), std::string::npos) << none.err;
   const Outcome noFfmpeg = run("env PATH=/nonexistent " + kBin + "tabletop render " + kScenarios +
                                "example1_single_cube.json --fps 5 --video " + dir + "/c.gif");
   EXPECT_EQ(noFfmpeg.status, 1);
@@ -571,14 +571,14 @@ TEST(CommandLine, RenderMakesAVideoAloneAndLeavesNoFrames) {
 TEST(CommandLine, RenderTakesEveryCameraForm) {
   const std::string dir = freshDir("tabletop_render_cameras");
   for (const std::string camera : {"fit", "corner", "follow:B", "2,1.5,3:0,0.75,0"}) {
-    const Outcome o = run(kBin + "tabletop render " + kScenarios + "example2_two_cubes.json --out " + dir +
+    const Outcome o = run(kBin + "tabletop render " + kScenarios + "example2_two_cubes.json --out-dir " + dir +
                           " --at 0 --size 80x60 --camera " + camera);
     EXPECT_EQ(o.status, 0) << camera << ": " << o.err;
     EXPECT_NE(o.out.find("(camera " + camera + ","), std::string::npos) << o.out;
   }
   std::filesystem::remove_all(dir);
   for (const std::string camera : {"follow:C", "ceiling", "1,2,3:1,2,3"}) {
-    const Outcome o = run(kBin + "tabletop render " + kScenarios + "example2_two_cubes.json --out " + dir +
+    const Outcome o = run(kBin + "tabletop render " + kScenarios + "example2_two_cubes.json --out-dir " + dir +
                           " --at 0 --camera " + camera);
     EXPECT_EQ(o.status, 2) << camera;
     EXPECT_EQ(lineCount(o.err), 1) << o.err;
@@ -592,13 +592,28 @@ TEST(CommandLine, RenderTakesEveryCameraForm) {
 TEST(CommandLine, RenderWithoutFfmpegKeepsTheFrames) {
   const std::string dir = freshDir("tabletop_render_no_ffmpeg");
   const Outcome o = run("env PATH=/nonexistent " + kBin + "tabletop render " + kScenarios +
-                        "example1_single_cube.json --out " + dir + " --fps 5 --size 80x60 --video " + dir + "/a.mp4");
+                        "example1_single_cube.json --out-dir " + dir + " --fps 5 --size 80x60 --video " + dir + "/a.mp4");
   EXPECT_EQ(o.status, 0) << o.err;
   EXPECT_EQ(lineCount(o.err), 1) << o.err;
   EXPECT_NE(o.err.find("ffmpeg is not installed"), std::string::npos) << o.err;
   EXPECT_TRUE(std::filesystem::exists(dir + "/frame_00000.png"));
   EXPECT_FALSE(std::filesystem::exists(dir + "/a.mp4"));
   std::filesystem::remove_all(dir);
+}
+
+// A run that takes more than half a second shows a bar with the time
+// left on a terminal (here a pseudo-terminal made by script(1)), and
+// nothing when standard error is not one.
+TEST(CommandLine, LongWorkShowsProgressOnATerminalOnly) {
+  const std::string command = kBin + "tabletop run " + kScenarios + "hard/pyramid_55.json --duration 2";
+  const Outcome quiet = run(command);
+  EXPECT_EQ(quiet.err, "");
+  const Outcome terminal = run("script -qec '" + command + "' /dev/null");
+  EXPECT_EQ(terminal.status, 0) << terminal.err;
+  EXPECT_NE(terminal.out.find("\r["), std::string::npos) << terminal.out;
+  EXPECT_NE(terminal.out.find(" left pyramid_55"), std::string::npos) << terminal.out;
+  EXPECT_NE(terminal.out.find("\r\033[K"), std::string::npos) << "the bar is cleared";
+  EXPECT_NE(terminal.out.find("pyramid_55"), std::string::npos) << terminal.out;
 }
 
 // --help speaks in words: values as NUMBER, INTEGER, TEXT or their
@@ -618,7 +633,7 @@ TEST(CommandLine, HelpIsPlainWords) {
 
 TEST(CommandLine, RenderRefusesBadOptionsInOneLine) {
   const std::string dir = freshDir("tabletop_render_bad");
-  const std::string base = kBin + "tabletop render " + kScenarios + "example1_single_cube.json --out " + dir;
+  const std::string base = kBin + "tabletop render " + kScenarios + "example1_single_cube.json --out-dir " + dir;
   Outcome o = run(base + " --size 12by3");
   EXPECT_EQ(o.status, 2);
   EXPECT_EQ(lineCount(o.err), 1) << o.err;

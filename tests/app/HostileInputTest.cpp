@@ -103,8 +103,8 @@ TEST(HostileInput, NumbersOnTheCommandLineMustBeFinite) {
   const std::vector<std::vector<std::string>> calls{
       {"run", example, "--tolerance", "nan"},         {"run", example, "--timestep", "nan"},
       {"run", example, "--duration", "inf"},          {"run", example, "--timestep", "-inf"},
-      {"render", example, "--out", "x", "--fps", "nan"}, {"render", example, "--out", "x", "--at", "nan"},
-      {"render", example, "--out", "x", "--at", "1e300"}, {"bench", "--rates", "nan"}};
+      {"render", example, "--out-dir", "x", "--fps", "nan"}, {"render", example, "--out-dir", "x", "--at", "nan"},
+      {"render", example, "--out-dir", "x", "--at", "1e300"}, {"bench", "--rates", "nan"}};
   for (const auto& args : calls) {
     const Outcome o = runArgs(args);
     EXPECT_EQ(o.status, 2) << args[0] << " " << args.back() << ": " << o.err;

@@ -86,7 +86,7 @@ TEST(ToleranceFront, ABadFrontFileIsOneLineNamingFileAndPlace) {
 // The shipped front holds every analytic case, and each of its errors is
 // what the physics gives at that setting today (the double build is
 // deterministic), to 1 nm: when the physics changes, regenerate it with
-// `tabletop bench --modes bullet --front data/tolerance_front.json`.
+// `tabletop bench --modes bullet --write-front data/tolerance_front.json`.
 TEST(ToleranceFront, TheShippedFrontMatchesThePhysics) {
 #ifndef BT_USE_DOUBLE_PRECISION
   GTEST_SKIP() << "the shipped front is measured with the double-precision build";
