@@ -64,6 +64,7 @@ class Window {
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
   enum class Drag { Still, Orbit, Pan } drag_ = Drag::Still;
   int dragX_ = 0, dragY_ = 0;
+  bool dragged_ = false;
   bool help_ = false;
   std::chrono::steady_clock::time_point escPressed_{};
   bool screenshotDue_ = false;
@@ -247,11 +248,15 @@ void Window::special(int key) {
 
 void Window::mouse(int button, int state, int x, int y) {
   if (state == GLUT_UP) {
+    // A left click that did not drag picks the entity under it.
+    if (button == GLUT_LEFT_BUTTON && !dragged_) session_.pick(x, y, width_, height_);
     drag_ = Drag::Still;
+    glutPostRedisplay();
     return;
   }
   if (button == 3 || button == 4) return;  // wheel, seen by wheel()
   dragX_ = x, dragY_ = y;
+  dragged_ = false;
   const bool shift = glutGetModifiers() & GLUT_ACTIVE_SHIFT;
   if (button == GLUT_LEFT_BUTTON) drag_ = shift ? Drag::Pan : Drag::Orbit;
   if (button == GLUT_MIDDLE_BUTTON) drag_ = Drag::Pan;
@@ -260,6 +265,7 @@ void Window::mouse(int button, int state, int x, int y) {
 void Window::motion(int x, int y) {
   const int dx = x - dragX_, dy = y - dragY_;
   dragX_ = x, dragY_ = y;
+  dragged_ = dragged_ || dx != 0 || dy != 0;
   if (drag_ == Drag::Orbit) session_.camera().orbit(-kOrbitDegreesPerPixel * dx, kOrbitDegreesPerPixel * dy);
   if (drag_ == Drag::Pan) session_.camera().pan(-double(dx) / height_, double(dy) / height_);
   glutPostRedisplay();

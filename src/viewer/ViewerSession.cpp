@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 
+#include "core/Angle.h"
 #include "core/Text.h"
 #include "draw/SceneDrawing.h"
 #include "sim/SceneBuilder.h"
@@ -128,6 +130,39 @@ void ViewerSession::nextEntity() {
   if (hasFaces(entities[i].geometry.kind())) arrow_.face = kFaces[0];
   if (!followed_.empty()) followed_ = arrow_.entity, followCamera();
   message_ = "arrow on " + arrowText();
+}
+
+bool ViewerSession::pick(double column, double row, int width, int height) {
+  const std::vector<EntityState> states = simulation_->snapshot();
+  const Vec3 eye = camera_.eye();
+  std::size_t best = states.size();
+  double nearest = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < states.size() && i < scenario_.entities.size(); ++i) {
+    const auto centre = camera_.project(states[i].position, width, height);
+    if (!centre) continue;
+    // The ball's outline on the image: its radius over its depth, at the
+    // focal length in pixels.
+    const double focal = 0.5 * height / std::tan(convertAngle(0.5 * camera_.fovyDegrees));
+    const double outline = focal * scenario_.entities[i].geometry.boundingRadius() / centre->depth;
+    if (std::hypot(centre->column - column, centre->row - row) > outline || centre->depth >= nearest) continue;
+    nearest = centre->depth, best = i;
+  }
+  if (best == states.size()) return false;
+  arrow_ = Arrow{};
+  arrow_.entity = scenario_.entities[best].name;
+  if (hasFaces(scenario_.entities[best].geometry.kind())) {
+    // The face whose outward normal, against the push it takes, points
+    // most towards the eye.
+    const Vec3 toEye = eye - states[best].position;
+    double most = -std::numeric_limits<double>::infinity();
+    for (DirectionDef face : kFaces) {
+      const double towards = -pushDirection(directionAngleDegrees(face) + states[best].yawDegrees).dot(toEye);
+      if (towards > most) most = towards, arrow_.face = face;
+    }
+  }
+  if (!followed_.empty()) followed_ = arrow_.entity, followCamera();
+  message_ = "arrow on " + arrowText();
+  return true;
 }
 
 void ViewerSession::pushArrowed() {

@@ -96,6 +96,11 @@ class ViewerSession {
   const std::string& followed() const { return followed_; }
   /// Tab: the arrow to the next entity (its first face).
   void nextEntity();
+  /// A click at pixel (`column`, `row`) of a `width` x `height` view: the
+  /// arrow moves to the nearest entity whose outline (its bounding ball as
+  /// seen) holds the pixel, on the face turned most towards the eye (a
+  /// sphere keeps its angle). False when the click hits no entity.
+  bool pick(double column, double row, int width, int height);
 
   // The overlay.
   /// I: the overlay on or off.

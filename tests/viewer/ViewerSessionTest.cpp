@@ -240,6 +240,30 @@ TEST(ViewerSession, CameraFitsFollowsAndCycles) {
   EXPECT_EQ(s.followed(), "");
 }
 
+// A click on an entity's image puts the arrow on it, on the face turned
+// towards the eye; a click on nothing leaves the arrow where it was.
+TEST(ViewerSession, AClickPicksTheEntityUnderIt) {
+  const Scenario scenario = example("example2_two_cubes");
+  ViewerSettings v = still();
+  v.camera = "front";
+  ViewerSession s(scenario, scenario.settings, v);
+  const auto b = s.camera().project(s.simulation().snapshot()[1].position, 960, 720);
+  ASSERT_TRUE(b);
+  EXPECT_TRUE(s.pick(b->column + 2, b->row - 2, 960, 720));
+  EXPECT_EQ(s.arrow().entity, "B");
+  ASSERT_TRUE(s.arrow().face);
+  EXPECT_EQ(*s.arrow().face, DirectionDef::Front) << "the front camera looks from +Z at the Front face";
+  EXPECT_FALSE(s.pick(5, 5, 960, 720)) << "the sky";
+  EXPECT_EQ(s.arrow().entity, "B");
+  s.camera().orbit(90.0, 0.0);  // now from +X: the Right face
+  const auto a = s.camera().project(s.simulation().snapshot()[0].position, 960, 720);
+  ASSERT_TRUE(a);
+  // Whichever cube is nearer under that pixel is picked, on its Right face.
+  EXPECT_TRUE(s.pick(a->column, a->row, 960, 720));
+  ASSERT_TRUE(s.arrow().face);
+  EXPECT_EQ(*s.arrow().face, DirectionDef::Right);
+}
+
 // A camera that follows an entity the scene does not have is refused.
 TEST(ViewerSession, FollowingNoEntityIsRefused) {
   const Scenario scenario = example("example2_two_cubes");
