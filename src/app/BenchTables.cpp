@@ -157,20 +157,29 @@ ResultTable hardTable(const std::vector<HardPoint>& points) {
 }
 
 std::string sweepPlotScript(const std::vector<BenchPoint>& points, const std::string& scene) {
+  // Errors below this (mm) are drawn on it, a labelled line: exact.
+  constexpr double kFloorMm = 1e-6;
+  // Colours that stay apart in print and for colour-blind readers (Okabe and Ito).
+  static const char* const kColours[] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9", "#000000"};
   // The curve a point belongs to: in bullet mode its integrator and
   // iterations, otherwise its mode alone.
   const auto family = [](const BenchPoint& p) {
     if (p.mode != SimulationMode::Bullet) return name(p.mode);
     return name(p.integrator) + ", " + std::to_string(p.iterations) + " iterations";
   };
+  const auto shown = [&scene](const BenchPoint& p) { return p.scene == scene && p.complete && !p.reference; };
   std::ostringstream g;
   g << std::setprecision(9);
   g << "set title " << gnuplotQuoted(scene + ": error against cost (Bullet, double)") << " noenhanced\n";
-  g << "set logscale xy\nset grid\nset key top right\n";
+  g << "set logscale xy\nset grid\nset key outside right top noenhanced\n";
+  g << "set format x '10^{%L}'\nset format y '10^{%L}'\n";
   g << "set xlabel 'wall time per simulated second [ms]'\nset ylabel 'error [mm]'\n";
+  g << "set arrow from graph 0, first " << kFloorMm << " to graph 1, first " << kFloorMm
+    << " nohead dt 3 lc rgb '#808080'\n";
+  g << "set label 'exact (below 10^{-6} mm)' at graph 0.02, first " << 1.6 * kFloorMm << " tc rgb '#606060'\n";
   std::vector<std::string> families;
   for (const BenchPoint& p : points) {
-    if (p.scene == scene && std::find(families.begin(), families.end(), family(p)) == families.end()) {
+    if (shown(p) && std::find(families.begin(), families.end(), family(p)) == families.end()) {
       families.push_back(family(p));
     }
   }
@@ -179,16 +188,21 @@ std::string sweepPlotScript(const std::vector<BenchPoint>& points, const std::st
     const std::string block = "$family" + std::to_string(f);
     g << block << " << EOD\n";
     for (const BenchPoint& p : points) {
-      if (p.scene == scene && family(p) == families[f] && p.complete) {
-        g << p.costMs << " " << std::max(1e-6, 1000.0 * p.error) << " " << 1.0 / p.timestep << "\n";
+      if (shown(p) && family(p) == families[f]) {
+        g << p.costMs << " " << std::max(kFloorMm, 1000.0 * p.error) << " " << 1.0 / p.timestep << "\n";
       }
     }
     g << "EOD\n";
-    curves.push_back(block + " using 1:2 with linespoints title " + gnuplotQuoted(families[f]));
+    const std::string style = std::string("lc rgb '") + kColours[f % 7] + "' pt " + std::to_string(5 + 2 * (f % 4)) +
+                              " dt " + std::to_string(1 + f / 7);
+    curves.push_back(block + " using 1:2 with linespoints lw 2 " + style + " title " + gnuplotQuoted(families[f]));
+    // Each point's rate beside it.
+    curves.push_back(block + " using 1:2:(sprintf('%g Hz', $3)) with labels offset 0.6,0.6 left font ',8' tc rgb '" +
+                     std::string(kColours[f % 7]) + "' notitle");
   }
   g << "$front << EOD\n";
   for (const BenchPoint& p : points) {
-    if (p.scene == scene && p.front) g << p.costMs << " " << std::max(1e-6, 1000.0 * p.error) << "\n";
+    if (shown(p) && p.front) g << p.costMs << " " << std::max(kFloorMm, 1000.0 * p.error) << "\n";
   }
   g << "EOD\n";
   curves.push_back("$front using 1:2 with points pt 6 ps 2.5 lc rgb 'black' title 'Pareto front'");

@@ -116,6 +116,7 @@ std::vector<BenchPoint> measureSweep(std::vector<BenchScene>& scenes, const Swee
       p.spread = t.spread;
       p.error = t.last.error;
       p.complete = t.last.complete;
+      p.reference = scene->isReference(settings, mode);
       points.push_back(p);
       hooks.advance(scene->name() + " " + std::string(toString(mode)) + " " + fixed(1.0 / settings.timestep, 0) +
                     " Hz");

@@ -25,6 +25,11 @@ void collect(const RunResult& r, BenchScene::Run& out) {
 
 }  // namespace
 
+bool BenchScene::isReference(const Settings& settings, SimulationMode mode) const {
+  return !analytic() && mode == SimulationMode::Bullet && settings.timestep == kReferenceTimestep &&
+         settings.iterations == kReferenceIterations && settings.integrator == Integrator::Trapezoid;
+}
+
 BenchScene::Run BenchScene::run(const Settings& settings, SimulationMode mode) {
   // The wall time is the script's, stepping only: building the scene is
   // not part of the cost per simulated second.
@@ -80,9 +85,9 @@ double growthExponent(const std::vector<double>& x, const std::vector<double>& y
 
 void markParetoFronts(std::vector<BenchPoint>& points) {
   for (BenchPoint& p : points) {
-    p.front = p.complete;
+    p.front = p.complete && !p.reference;
     for (const BenchPoint& q : points) {
-      if (&q == &p || q.scene != p.scene || !q.complete) continue;
+      if (&q == &p || q.scene != p.scene || !q.complete || q.reference) continue;
       const bool noWorse = q.costMs <= p.costMs && q.error <= p.error;
       const bool better = q.costMs < p.costMs || q.error < p.error;
       if (noWorse && better) {

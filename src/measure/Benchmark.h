@@ -27,6 +27,9 @@ class BenchScene {
   const Scenario& scenario() const { return scenario_; }
   const std::string& name() const { return scenario_.name; }
   bool analytic() const { return analytic_.has_value(); }
+  /// Whether `settings` in `mode` are the reference run's own: its error
+  /// is zero by construction, so it is neither plotted nor on the front.
+  bool isReference(const Settings& settings, SimulationMode mode) const;
 
   /// Runs once with `settings`; the error in metres (the largest position
   /// error) and the wall seconds the run took.
@@ -61,6 +64,7 @@ struct BenchPoint {
   double error = 0.0;     ///< m
   bool complete = true;
   bool front = false;     ///< on the scene's Pareto front of cost and error
+  bool reference = false; ///< the settings of the scene's own reference run (error 0 by construction)
 };
 
 /// A model switch (ModelSwitch) measured on a scene, in full physics at
@@ -91,7 +95,8 @@ struct ScalePoint {
 double growthExponent(const std::vector<double>& x, const std::vector<double>& y);
 
 /// Marks, among the points of each scene, those no other point beats in
-/// both cost and error (the Pareto front).
+/// both cost and error (the Pareto front); a scene's reference run is
+/// neither on it nor beats anything.
 void markParetoFronts(std::vector<BenchPoint>& points);
 
 }  // namespace tabletop
