@@ -37,7 +37,7 @@ cmake --build consumer > consumer-build.log || { cat consumer-build.log; exit 1;
 out=$(consumer/slide)
 echo "$out"
 grep -q "slid 0.1019 m (closed form 0.1019 m)" <<< "$out" || { echo "FAIL: the consumer's cube did not slide 0.1019 m"; exit 1; }
-grep -qxF "$out" "$source_dir/README.md" || { echo "FAIL: the README does not show the consumer's output as it runs"; exit 1; }
+grep -qxF "$out" "$source_dir/docs/library.md" || { echo "FAIL: docs/library.md does not show the consumer's output as it runs"; exit 1; }
 # The Python module, where the build made one: imported from the prefix,
 # it runs a shipped scenario from the installed data.
 module=$(find "$prefix" -name 'tabletop*.so' -path '*python3*' | head -1)

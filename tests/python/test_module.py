@@ -144,18 +144,33 @@ def test_every_function_has_a_docstring():
         assert getattr(tabletop.Simulation, name).__doc__, name
 
 
-def test_the_readmes_session_runs_as_shown(monkeypatch):
-    """The README's Python session is a doctest: its outputs are what the module prints."""
+def test_the_library_pages_session_runs_as_shown(monkeypatch):
+    """docs/library.md's Python session is a doctest: its outputs are what the module prints."""
     import doctest
     import re
 
     from conftest import SOURCE
-    readme = (SOURCE / "README.md").read_text()
-    blocks = re.findall(r"```python\n(.*?)```", readme, re.S)
-    assert blocks, "the README shows no Python session"
+    page = (SOURCE / "docs" / "library.md").read_text()
+    blocks = re.findall(r"```python\n(.*?)```", page, re.S)
+    assert blocks, "docs/library.md shows no Python session"
     monkeypatch.chdir(SOURCE)
     parser = doctest.DocTestParser()
     runner = doctest.DocTestRunner(optionflags=doctest.NORMALIZE_WHITESPACE)
     for text in blocks:
-        runner.run(parser.get_doctest(text, {}, "README", "README.md", 0))
+        runner.run(parser.get_doctest(text, {}, "library", "docs/library.md", 0))
     assert runner.summarize(verbose=False).failed == 0
+
+
+def test_the_readmes_scene_runs():
+    """The README's smallest scene is a scene the loader takes, and its push travels its step."""
+    import json
+    import re
+
+    from conftest import SOURCE
+    blocks = re.findall(r"```json\n(.*?)```", (SOURCE / "README.md").read_text(), re.S)
+    assert blocks, "the README shows no scene"
+    for text in blocks:
+        sim = tabletop.Simulation(json.loads(text))
+        start = sim.positions[0].copy()
+        sim.run_to_end()
+        assert abs(sim.positions[0, 0] - start[0] - 0.2) < 0.2 * 0.005   # the step, within 0.5%
