@@ -27,12 +27,6 @@ Progress::~Progress() {
   if (shown_ && drawnAny_) err_ << "\r\033[K" << std::flush;
 }
 
-void Progress::say(const std::string& what) {
-  if (!shown_) return;
-  drawnAny_ = true;
-  err_ << "\r" << what << "\033[K" << std::flush;
-}
-
 void Progress::start(long total) { total_ = std::max(total, done_); }
 
 void Progress::set(long done, const std::string& what) {

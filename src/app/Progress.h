@@ -24,8 +24,6 @@ class Progress {
   void advance(const std::string& what) { set(done_ + 1, what); }
   /// `done` steps done; `what` names the work.
   void set(long done, const std::string& what);
-  /// Shows `what` alone, for work that cannot count its steps.
-  void say(const std::string& what);
 
  private:
   std::ostream& err_;

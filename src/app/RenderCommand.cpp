@@ -332,8 +332,10 @@ int renderScenario(const RenderOptions& options, std::ostream& out, std::ostream
     std::optional<std::string> problem;
     {
       Progress encoding(err);
-      encoding.say("encoding " + std::to_string(frames) + " frames into " + shownText(*options.video) + " ...");
-      problem = encodeVideo((dir / "frame_%05d.png").string(), options.fps, *options.video);
+      encoding.start(frames);
+      const std::string what = "encoding " + shownText(*options.video);
+      problem = encodeVideo((dir / "frame_%05d.png").string(), options.fps, *options.video,
+                            [&encoding, &what](long done) { encoding.set(done, what); });
     }
     if (problem) {
       err << "tabletop render: " << *problem << (options.outDir.empty() ? "" : "; the frames are in " + shownDir)

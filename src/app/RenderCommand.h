@@ -33,7 +33,7 @@ void addRenderOptions(CLI::App& command, RenderOptions& options);
 /// ffmpeg (without --out-dir the frames go to a temporary folder; with --out-dir
 /// they are removed after encoding unless --keep-frames). The camera is
 /// fitted over the whole run unless --camera says otherwise. On a terminal
-/// a progress bar shows the frames, and a line the encoding. Statuses:
+/// a progress bar shows the frames, then the encoding. Statuses:
 /// kExitBadInput for a bad scenario or option; kExitFailure when a file
 /// cannot be written, OSMesa fails, or a video alone is asked for without
 /// ffmpeg. Without ffmpeg and with --out-dir it says so in one line and keeps

@@ -1,6 +1,8 @@
 #include "headless/VideoEncoder.h"
 
 #include <cstdio>
+#include <cstdlib>
+#include <fstream>
 
 #include "core/Text.h"
 #include "io/AtomicFile.h"
@@ -18,7 +20,8 @@ std::optional<std::string> videoNameProblem(const std::string& out) {
 
 bool ffmpegAvailable() { return programAvailable("ffmpeg"); }
 
-std::optional<std::string> encodeVideo(const std::string& framePattern, double fps, const std::string& out) {
+std::optional<std::string> encodeVideo(const std::string& framePattern, double fps, const std::string& out,
+                                       const std::function<void(long frames)>& progress) {
   // Every argument is one argv entry: a frame or video name is never parsed
   // by a shell. "-i" names the frames by a pattern ffmpeg expands itself.
   std::vector<std::string> args{"ffmpeg", "-nostdin", "-y", "-loglevel", "error", "-framerate", std::to_string(fps),
@@ -40,9 +43,22 @@ std::optional<std::string> encodeVideo(const std::string& framePattern, double f
   // "file:" keeps a name that starts like a protocol ("http:") a file name.
   args.push_back("file:" + file.temporaryPath());
   const std::string log = file.temporaryPath() + ".log";
-  const int status = runProgram(args, "", log);
+  // ffmpeg writes "frame=N" lines, among others, to its progress file.
+  const std::string progressFile = file.temporaryPath() + ".progress";
+  if (progress) args.insert(args.begin() + 1, {"-progress", "file:" + progressFile});
+  const auto report = [&progress, &progressFile] {
+    std::ifstream in(progressFile);
+    std::string line;
+    long frames = -1;
+    while (std::getline(in, line)) {
+      if (line.rfind("frame=", 0) == 0) frames = std::strtol(line.c_str() + 6, nullptr, 10);
+    }
+    if (frames >= 0) progress(frames);
+  };
+  const int status = runProgram(args, "", log, progress ? std::function<void()>(report) : std::function<void()>());
   const std::string why = lastLineOf(log);
   std::remove(log.c_str());
+  std::remove(progressFile.c_str());
   if (status != 0) {
     return "ffmpeg could not encode " + shownText(out) + (why.empty() ? std::string() : ": " + shownText(why, 200));
   }

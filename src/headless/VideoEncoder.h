@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -14,8 +15,10 @@ bool ffmpegAvailable();
 /// Encodes the numbered PNG frames `framePattern` (printf style, e.g.
 /// "DIR/frame_%05d.png") played at `fps` into `out`, an .mp4 (H.264,
 /// yuv420p) or a .gif (with a palette made from the frames), by running
-/// ffmpeg. Writes a temporary file renamed into place. Returns an error
-/// message, or nothing on success.
-std::optional<std::string> encodeVideo(const std::string& framePattern, double fps, const std::string& out);
+/// ffmpeg. Writes a temporary file renamed into place. `progress`, when
+/// given, is told how many frames ffmpeg has encoded, about ten times a
+/// second. Returns an error message, or nothing on success.
+std::optional<std::string> encodeVideo(const std::string& framePattern, double fps, const std::string& out,
+                                       const std::function<void(long frames)>& progress = {});
 
 }  // namespace tabletop

@@ -15,7 +15,8 @@ extern char** environ;
 
 namespace tabletop {
 
-int runProgram(const std::vector<std::string>& args, const std::string& input, const std::string& logPath) {
+int runProgram(const std::vector<std::string>& args, const std::string& input, const std::string& logPath,
+               const std::function<void()>& waiting) {
   std::FILE* in = std::tmpfile();
   if (!in) return -1;
   const bool written = std::fwrite(input.data(), 1, input.size(), in) == input.size() && std::fflush(in) == 0;
@@ -39,8 +40,14 @@ int runProgram(const std::vector<std::string>& args, const std::string& input, c
   std::fclose(in);
   if (started != 0) return 127;
   int status = 0;
-  while (waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) return -1;
+  for (;;) {
+    const pid_t done = waitpid(pid, &status, waiting ? WNOHANG : 0);
+    if (done == pid) break;
+    if (done < 0 && errno != EINTR) return -1;
+    if (done == 0) {
+      waiting();
+      usleep(100000);
+    }
   }
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -10,8 +11,11 @@ namespace tabletop {
 /// on its standard input (through an unnamed temporary file), standard
 /// output and error into `logPath` (or /dev/null when empty). Returns its
 /// exit status, 127 when it could not be started (not installed), or -1
-/// when it was killed by a signal.
-int runProgram(const std::vector<std::string>& args, const std::string& input, const std::string& logPath);
+/// when it was killed by a signal. `waiting`, when given, is called about
+/// ten times a second while the program runs (a progress bar reads its
+/// output then).
+int runProgram(const std::vector<std::string>& args, const std::string& input, const std::string& logPath,
+               const std::function<void()>& waiting = {});
 
 /// Whether `name` is an executable file in one of PATH's directories.
 bool programAvailable(const std::string& name);
