@@ -136,6 +136,8 @@ class FrameMaker {
     DrawOptions drawOptions;
     drawOptions.arrow = options_.arrow;
     drawOptions.contacts = options_.contacts;
+    // The floor reaches under everything the run's frames show.
+    drawOptions.floorReach = 1.5 * extent.reachFrom(scenario_.table.centreX, scenario_.table.centreZ);
     const std::vector<EntityState> states = playback_.simulation().snapshot();
     const DrawList list = makeDrawList(scenario_, states, playback_.player().arrow(),
                                        playback_.simulation().contactPoints(), drawOptions);

@@ -102,6 +102,11 @@ std::vector<Camera::Bound> SceneExtent::corners() const {
   return out;
 }
 
+double SceneExtent::reachFrom(double x, double z) const {
+  if (empty_) return 0.0;
+  return std::max({std::abs(low_.x - x), std::abs(high_.x - x), std::abs(low_.z - z), std::abs(high_.z - z)});
+}
+
 Camera cameraFor(const CameraChoice& choice, const Scenario& scenario, const std::vector<EntityState>& states,
                  const SceneExtent& extent, double aspect) {
   Camera c = *Camera::named("front", scenario.table);

@@ -41,6 +41,8 @@ class SceneExtent {
   /// The box's eight corners, as balls of no radius: a view holding them
   /// holds the box, since the view is convex.
   std::vector<Camera::Bound> corners() const;
+  /// The farthest the box reaches from (x, z) across the floor, metres.
+  double reachFrom(double x, double z) const;
 
  private:
   Vec3 low_, high_;

@@ -8,8 +8,11 @@
 namespace tabletop {
 namespace {
 
-// How far the floor reaches around the table, in table sizes.
+// How far the floor reaches around the table, in table sizes, and past
+// the farthest entity; at most kMostFloorTiles tiles a side (they grow).
 constexpr double kFloorReach = 3.0;
+constexpr double kFloorBeyond = 1.5;
+constexpr double kMostFloorTiles = 200.0;
 
 // The arrow's head stops this far short of the face, metres.
 constexpr double kArrowGap = 0.005;
@@ -108,9 +111,13 @@ DrawList makeDrawList(const Scenario& scenario, const std::vector<EntityState>& 
 
   list.tableTop = {t.height, t.centreX - 0.5 * t.width, t.centreX + 0.5 * t.width, t.centreZ - 0.5 * t.depth,
                    t.centreZ + 0.5 * t.depth};
-  const double reachOut = kFloorReach * std::max({t.width, t.depth, t.height});
+  double reachOut = std::max(kFloorReach * std::max({t.width, t.depth, t.height}), options.floorReach);
+  for (const EntityState& s : states) {
+    reachOut = std::max(reachOut, kFloorBeyond * std::max(std::abs(s.position.x - t.centreX),
+                                                          std::abs(s.position.z - t.centreZ)));
+  }
   list.floor = {0.0, t.centreX - reachOut, t.centreX + reachOut, t.centreZ - reachOut, t.centreZ + reachOut};
-  list.floorTile = 0.5 * std::max(t.width, t.depth) / 1.2;
+  list.floorTile = std::max(0.5 * std::max(t.width, t.depth) / 1.2, 2.0 * reachOut / kMostFloorTiles);
   // The lamp hangs above the table, a little to the left and to the front,
   // so shadows fall to the right and back as in the report's picture.
   const double size = std::max({t.width, t.depth, t.height});

@@ -15,6 +15,7 @@ namespace tabletop {
 struct DrawOptions {
   bool arrow = true;     ///< the report's Push Direction (On/Off)
   bool contacts = false; ///< draw contact points
+  double floorReach = 0.0; ///< the floor reaches at least this far from the table's centre, metres
 };
 
 /// The draw list of `scenario` with its entities where `states` (one per

@@ -123,3 +123,30 @@ TEST(SceneDrawing, ArrowHeadTouchesThePushedFace) {
 
 }  // namespace
 }  // namespace tabletop
+
+namespace tabletop {
+namespace {
+
+// The floor reaches past every entity, and past what a render asks for,
+// with at most 200 tiles a side however far that is.
+TEST(SceneDrawing, FloorReachesPastEveryEntityInBoundedTiles) {
+  Scenario scene;
+  EntitySpec e;
+  e.name = "far";
+  scene.entities.push_back(e);
+  for (const double x : {0.5, 30.0, 9000.0}) {
+    EntityState s;
+    s.name = "far";
+    s.position = {x, 0.05, -0.2};
+    const DrawList list = makeDrawList(scene, {s}, std::nullopt, {});
+    EXPECT_GT(list.floor.xMax, x) << x;
+    EXPECT_LE((list.floor.xMax - list.floor.xMin) / list.floorTile, 200.0 + 1e-9) << x;
+  }
+  DrawOptions options;
+  options.floorReach = 50.0;
+  const DrawList asked = makeDrawList(scene, {EntityState{}}, std::nullopt, {}, options);
+  EXPECT_GE(asked.floor.zMax - scene.table.centreZ, 50.0);
+}
+
+}  // namespace
+}  // namespace tabletop
