@@ -19,4 +19,12 @@ struct TableEdges {
 /// X > X_R, X < X_L, Z > Z_F, Z < Z_B.
 EntityPositionStatus dropStatus(const Vec3& centre, const TableEdges& table);
 
+/// The share (0 to 1) of a step at which a centre crossed the edge that
+/// `drop` names, going from `p0` with velocity `v0` to `p1` with `v1` in
+/// `dt` seconds: where the quadratic through both places and the start's
+/// velocity (exact for a constant acceleration, such as sliding friction)
+/// meets the edge's line. 1 when it does not cross within the step.
+double edgeCrossing(const Vec3& p0, const Vec3& v0, const Vec3& p1, double dt, EntityPositionStatus drop,
+                    const TableEdges& table);
+
 }  // namespace tabletop

@@ -329,6 +329,12 @@ void World::start() {
 void World::step() {
   start();
   addLegsIfReachable();
+  // Where each entity starts the step, so that an edge passed inside it is
+  // placed at its own time (observe()).
+  for (std::size_t i = 0; i < entities_.size(); ++i) {
+    trackers_[i].lastCentre = entities_[i]->position();
+    trackers_[i].lastVelocity = entities_[i]->body()->getLinearVelocity();
+  }
   const int n = substeps();
   for (int k = 0; k < n; ++k) world_->step(settings_.timestep / n);
   ++steps_;

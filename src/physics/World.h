@@ -111,6 +111,8 @@ class World : public Simulation {
     bool atRest = true;
     double inner = 0.0;  // the smallest half extent, m
     double turningReach = 0.0;  // how far its surface moves per radian turned, m
+    btVector3 lastCentre{0, 0, 0};    // at the start of the step, m
+    btVector3 lastVelocity{0, 0, 0};  // at the start of the step, m/s
   };
 
   Shape& entity(const std::string& name);
