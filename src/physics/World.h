@@ -120,6 +120,10 @@ class World : public Simulation {
   void updateSmoothAcceleration();
   void addLegsIfReachable();
   void observe(bool emit);
+  /// When, inside the step just taken, entity `shape` falling freely from
+  /// its start (tracker) reached the height at which it rests flat on
+  /// `support` (a user index): a landing's own time, not the step's end.
+  double landingTime(const Tracker& tracker, const Shape& shape, int support) const;
   void record(const Event& e);
   Support participant(const btCollisionObject* object) const;
   Support participant(int userIndex) const;

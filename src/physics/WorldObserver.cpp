@@ -4,6 +4,7 @@
 // 3.4), rest. Split from World.cpp, which builds and steps the scene.
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 #include "physics/World.h"
@@ -34,6 +35,23 @@ bool World::allAtRest() const {
 // Reads the contact manifolds and every entity's motion after a step, and
 // records what changed. With `emit` false (the initial state) it only sets
 // the state.
+double World::landingTime(const Tracker& tracker, const Shape& shape, int support) const {
+  // The height its centre has when it rests flat on the support's top.
+  double top = table_.topHeight();
+  if (participant(support).kind() == Support::Kind::Ground) top = 0.0;
+  if (support >= 0) {
+    const Shape& base = *entities_[static_cast<std::size_t>(support)];
+    top = base.position().y() + base.above();
+  }
+  const double contact = top + shape.below();
+  // Falling freely from the step's start: y0 + vy0 t - g t^2 / 2 = contact.
+  const double y0 = tracker.lastCentre.y(), vy0 = tracker.lastVelocity.y(), g = settings_.gravity;
+  const double dt = settings_.timestep, start = time_ - dt;
+  const double disc = vy0 * vy0 + 2.0 * g * (y0 - contact);
+  if (g <= 0.0 || disc < 0.0) return time_;
+  return start + std::clamp((vy0 + std::sqrt(disc)) / g, 0.0, dt);
+}
+
 void World::observe(bool emit) {
   const std::size_t n = entities_.size();
 
@@ -123,7 +141,7 @@ void World::observe(bool emit) {
       if (support[i] != kNoSupport) {
         if (emit && support[i] != tracker.lastSupport) {
           Event e;
-          e.t = time_;
+          e.t = landingTime(tracker, shape, support[i]);
           e.type = EventType::Lands;
           e.entity = shape.name();
           e.on = shape.support();

@@ -1,4 +1,7 @@
-// Report 3.4's moment, at its own time: a body sliding under friction off
+// Landings and report 3.4's moment, at their own time. A body dropped
+// kDropHeight onto the floor, the table or a slab (e = 0) is reported
+// landing at t0 = sqrt(2 h / g), within 1e-4 s at every rate from 30 Hz to
+// 1 kHz. And a body sliding under friction off
 // a table edge is reported leaving the table when its centre passes the
 // edge, t = (v0 - sqrt(v0^2 - 2 a d)) / a with a = mu g, within 1e-4 s at
 // every rate from 30 Hz to 1 kHz, for each edge and a cube and a box, not
@@ -17,6 +20,7 @@
 
 #include "core/Simulation.h"
 #include "scenario/ScenarioLoader.h"
+#include "scenes/LawScenes.h"
 #include "sim/SceneBuilder.h"
 #include "sim/ScriptRunner.h"
 
@@ -25,7 +29,7 @@ namespace {
 
 constexpr double kG = 9.81;  // m/s^2
 
-TEST(EdgeEvent, LeavingTheTableIsPlacedInsideTheStep) {
+TEST(EventTime, LeavingTheTableIsPlacedInsideTheStep) {
   const double mu = 0.25, v0 = 1.5, before = 0.3;  // m/s; m from the centre to the edge
   const double a = mu * kG, expected = (v0 - std::sqrt(v0 * v0 - 2 * a * before)) / a;
   struct Edge { const char* direction; const char* name; const char* position; };
@@ -51,6 +55,29 @@ TEST(EdgeEvent, LeavingTheTableIsPlacedInsideTheStep) {
           EXPECT_NEAR(e.t, expected, 1e-4) << edge.name << " edge, " << shape << ", " << rate << " Hz";
         }
         EXPECT_TRUE(seen) << edge.name << " edge, " << shape << ", " << rate << " Hz";
+      }
+    }
+  }
+}
+
+TEST(EventTime, ALandingIsPlacedInsideTheStep) {
+  const double t0 = std::sqrt(2.0 * kDropHeight / kG);
+  struct Shape { const char* shape; const char* size; double below; };
+  for (const Shape& shape : {Shape{"cube", "0.1", 0.05}, Shape{"sphere", "0.05", 0.05},
+                             Shape{"cylinder", "[0.05, 0.05, 0.1]", 0.05}, Shape{"box", "[0.2, 0.05, 0.12]", 0.025}}) {
+    for (const char* support : {"table", "ground", "slab"}) {
+      for (const double rate : {30.0, 60.0, 240.0, 1000.0}) {
+        const DropCase c{shape.shape, shape.size, shape.below, support, 0.0, rate};
+        const Scenario s = dropScene(c);
+        auto sim = buildSimulation(s, s.settings, SimulationMode::Bullet);
+        const RunResult r = runScript(s, s.settings, *sim);
+        bool seen = false;
+        for (const Event& e : r.events) {
+          if (e.type != EventType::Lands || e.entity != "A" || seen) continue;
+          seen = true;
+          EXPECT_NEAR(e.t, t0, 1e-4) << describe(c);
+        }
+        EXPECT_TRUE(seen) << describe(c);
       }
     }
   }
