@@ -19,8 +19,6 @@ constexpr int kGroundIndex = -3;
 // smallest half extent (World::substeps).
 constexpr double kSubstepTravel = 0.5;
 
-btVector3 toBullet(const Vec3& v) { return btVector3(v.x, v.y, v.z); }
-Vec3 toVec3(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
 
 btQuaternion yawRotation(double degrees) {
   return btQuaternion(btVector3(0, 1, 0), convertAngle(degrees));

@@ -21,6 +21,10 @@
 
 namespace tabletop {
 
+/// A vector between tabletop's plain type and Bullet's.
+inline btVector3 toBullet(const Vec3& v) { return btVector3(v.x, v.y, v.z); }
+inline Vec3 toVec3(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
+
 /// A scene in full Bullet physics (mode "bullet"): owns the Bullet pipeline,
 /// the Table, the Ground and the entities, and steps them at a fixed rate,
 /// each step cut into equal parts while a body moves fast for its size

@@ -154,10 +154,9 @@ void World::observe(bool emit) {
     // Report 3.4: the centre passing an edge starts the drop, at the time
     // inside the step at which it passed.
     if (shape.checkBoundary(table_) && emit) {
-      const auto vec = [](const btVector3& v) { return Vec3{v.x(), v.y(), v.z()}; };
       const double dt = settings_.timestep;
       Event e;
-      e.t = time_ - dt + dt * edgeCrossing(vec(tracker.lastCentre), vec(tracker.lastVelocity), vec(shape.position()), dt,
+      e.t = time_ - dt + dt * edgeCrossing(toVec3(tracker.lastCentre), toVec3(tracker.lastVelocity), toVec3(shape.position()), dt,
                                            shape.status(), table_.edges());
       e.type = EventType::LeavesTable;
       e.entity = shape.name();
