@@ -15,12 +15,11 @@ function(tabletop_test name)
   if(ARG_LABELS)
     set(_labels ${ARG_LABELS})
   endif()
-  # Mesa's on-disk shader cache is off in tests: a test leaves nothing in
-  # the user's home, and a cache filled by earlier runs made
-  # LeakSanitizer's tracer crash at exit of the sanitized render command.
-  # llvmpipe draws on the calling thread: its worker threads, still
-  # winding down at exit, once crashed the same tracer after a render
-  # test had passed.
+  # Mesa's on-disk shader cache is off in tests, so a test leaves nothing
+  # in the user's home; llvmpipe draws on the calling thread, so no worker
+  # threads are left winding down at exit. (The LeakSanitizer tracer
+  # crashes once put down to these were the runtime's __tls_get_addr bug:
+  # cmake/SanitizerDefaults.cpp.)
   gtest_discover_tests(${name}
     WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
     PROPERTIES LABELS "${_labels}" ENVIRONMENT "MESA_SHADER_CACHE_DISABLE=true"
