@@ -21,7 +21,9 @@ namespace tabletop {
 /// weight down too slowly) or slide on a touching point (where sweeps let
 /// friction shift the load between the points unevenly: a cube with
 /// mu = 0.9 slid 29 mm short and turned 4 degrees) and sweeps the rest. An island the pivoting
-/// fails on is swept (Bullet's own fallback).
+/// fails on is swept (Bullet's own fallback). The push out of penetration
+/// (split impulse) is pivoted on the normal rows alone; should that fail,
+/// the step keeps its exact velocities and pushes nothing out.
 ///
 /// Friction in an island solved exactly: a contact point keeps a second
 /// friction row, across the first, if it could stick within the step (its

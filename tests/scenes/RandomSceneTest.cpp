@@ -85,11 +85,13 @@ class RandomRuns : public testing::TestWithParam<int> {};
 constexpr int kShards = 10;
 constexpr int kRunsPerShard = 1000;
 
-TEST_P(RandomRuns, StayFiniteInTheWorldAndGainNoEnergy) {
+// The failures of one shard's runs at a step of `timestep` s, one line per seed.
+std::vector<std::string> failingRuns(int shard, double timestep) {
   std::vector<std::string> failures;
   for (int k = 0; k < kRunsPerShard; ++k) {
-    const std::uint64_t seed = static_cast<std::uint64_t>(GetParam()) * kRunsPerShard + k;
-    const Scenario s = RandomScene::make(seed);
+    const std::uint64_t seed = static_cast<std::uint64_t>(shard) * kRunsPerShard + k;
+    Scenario s = RandomScene::make(seed);
+    s.settings.timestep = timestep;
     double below = 0.0;  // the lowest any body's highest point came, m
     const StabilityReport r = probeStability(s, s.settings, [&](const Simulation& sim) {
       for (const auto& e : dynamic_cast<const World&>(sim).entities()) {
@@ -108,9 +110,29 @@ TEST_P(RandomRuns, StayFiniteInTheWorldAndGainNoEnergy) {
     else if (r.energyGain > 0.05 * r.energyScale) why = "energy gain " + std::to_string(r.energyGain) + " J";
     if (!why.empty()) failures.push_back("seed " + std::to_string(seed) + ": " + why);
   }
+  return failures;
+}
+
+std::string listed(const std::vector<std::string>& failures) {
   std::string all;
   for (const std::string& f : failures) all += "\n  " + f;
-  EXPECT_TRUE(failures.empty()) << failures.size() << " of " << kRunsPerShard << " runs failed:" << all;
+  return all;
+}
+
+TEST_P(RandomRuns, StayFiniteInTheWorldAndGainNoEnergy) {
+  const std::vector<std::string> failures = failingRuns(GetParam(), Settings{}.timestep);
+  EXPECT_TRUE(failures.empty()) << failures.size() << " of " << kRunsPerShard << " runs failed:" << listed(failures);
+}
+
+// The same runs at 60 Hz, the rate a viewer runs at. Measured: all pass,
+// energy excess 0.20% at most (seed 4612), gain 1.4% (seed 8286). Before
+// the direct solver kept every loaded island and solved the push out of
+// penetration on the normal rows alone, four bodies passed into the table
+// top (seeds 1314, 1563, 1564, 6685): a light cone under a body 20 to 50
+// times heavier, swept for a step after the pivoting failed, sank.
+TEST_P(RandomRuns, StayFiniteInTheWorldAndGainNoEnergyAt60Hz) {
+  const std::vector<std::string> failures = failingRuns(GetParam(), 1.0 / 60.0);
+  EXPECT_TRUE(failures.empty()) << failures.size() << " of " << kRunsPerShard << " runs failed:" << listed(failures);
 }
 
 INSTANTIATE_TEST_SUITE_P(TenThousand, RandomRuns, testing::Range(0, kShards));

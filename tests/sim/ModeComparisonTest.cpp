@@ -79,9 +79,14 @@ TEST(PinnedDifference, MisalignedCubesTurnInFullPhysics) {
   EXPECT_DOUBLE_EQ(b.modes[1].state.yawDegrees, 0.0);
   EXPECT_GT(std::abs(b.modes[2].state.yawDegrees), 10.0);
   EXPECT_EQ(b.modes[2].verdict.rfind("diverges: stopped short, rotated", 0), 0u) << b.modes[2].verdict;
-  // Every reason that applies, the largest (against its threshold) first:
-  // the striker, turned aside by the corner it met.
-  EXPECT_EQ(entity(c, "A").modes[2].verdict, "diverges: stopped short, went sideways, rotated");
+  // Every reason that applies, stopping short (0.26 m) the largest against
+  // its threshold: the striker, turned aside by the corner it met (which of
+  // its turn and its sideways path ranks next hangs on the chaotic
+  // corner-to-face contact, and changed with the solver's rounding).
+  const std::string& a = entity(c, "A").modes[2].verdict;
+  EXPECT_EQ(a.rfind("diverges: stopped short, ", 0), 0u) << a;
+  EXPECT_NE(a.find("went sideways"), std::string::npos) << a;
+  EXPECT_NE(a.find("rotated"), std::string::npos) << a;
 }
 
 // A 20 g sphere strikes a 2 kg one head-on. The rules stop the striker at
