@@ -130,11 +130,16 @@ ResultTable scaleTable(const std::vector<ScalePoint>& points) {
 
 ResultTable hardTable(const std::vector<HardPoint>& points) {
   ResultTable t;
-  t.title = "Hard cases (full physics, each at its own settings, one run)";
+  t.title = "Hard cases, one run each at the scene's own settings (the solver chosen per island unless the scene "
+            "names one), then with " + std::to_string(kHardSweeps) +
+            " sweeps of sequential impulses, then in Bullet's own default pipeline at the same step";
   t.columns = {{"scene", "scene"},
                {"timestep_s", ""},
                {"", "rate [Hz]"},
-               {"iterations", "iterations"},
+               {"iterations", ""},
+               {"islands_direct", "exact"},
+               {"islands_swept", "swept"},
+               {"islands_fallen_back", "fell back"},
                {"cost_ms_per_s", "cost [ms/s]"},
                {"worst_drift_m", "drift [mm]"},
                {"worst_penetration_m", "penetration [mm]"},
@@ -142,16 +147,29 @@ ResultTable hardTable(const std::vector<HardPoint>& points) {
                {"energy_gain_j", "energy gain"},
                {"energy_scale_j", ""},
                {"complete", ""},
-               {"failure", "outcome"}};
+               {"failure", "outcome"},
+               {"sweeps_cost_ms_per_s", "sweeps: cost"},
+               {"sweeps_worst_drift_m", "drift [mm]"},
+               {"sweeps_worst_penetration_m", "penetration [mm]"},
+               {"sweeps_complete", ""},
+               {"bullet_cost_ms_per_s", "Bullet: cost"},
+               {"bullet_worst_drift_m", "drift [mm]"}};
+  const auto millimetres = [](double metres) { return cell(metres, fixed(1e3 * metres, 3)); };
   for (const HardPoint& p : points) {
     const StabilityReport& r = p.report;
+    const StabilityReport& w = p.sweeps;
     t.rows.push_back(
         {cell(p.scene), cell(p.settings.timestep, 6), cell(nullptr, fixed(1.0 / p.settings.timestep, 0)),
-         cell(p.settings.iterations, std::to_string(p.settings.iterations)), cell(r.cost(), 2),
-         cell(r.worstDrift, fixed(1e3 * r.worstDrift, 3)), cell(r.worstPenetration, fixed(1e3 * r.worstPenetration, 3)),
+         cell(p.settings.iterations, ""), cell(r.solverUse.direct, std::to_string(r.solverUse.direct)),
+         cell(r.solverUse.swept, std::to_string(r.solverUse.swept)),
+         cell(r.solverUse.fallbacks, std::to_string(r.solverUse.fallbacks)),
+         cell(r.cost(), 2), millimetres(r.worstDrift), millimetres(r.worstPenetration),
          cell(r.restSpeed, fixed(1e3 * r.restSpeed, 4)),
          cell(r.energyGain, r.energyScale > 0 ? fixed(100.0 * r.energyGain / r.energyScale, 3) + "%" : "0"),
-         cell(r.energyScale, ""), flag(r.complete, ""), cell(r.failure, r.complete ? "" : "diverged: " + r.failure)});
+         cell(r.energyScale, ""), flag(r.complete, ""), cell(r.failure, r.complete ? "" : "diverged: " + r.failure),
+         cell(w.cost(), 2), errorCell(w.worstDrift, w.complete, 3),
+         millimetres(w.worstPenetration), flag(w.complete, ""), cell(p.plain.costMsPerSecond, 2),
+         millimetres(p.plain.worstDrift)});
   }
   return t;
 }

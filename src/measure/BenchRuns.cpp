@@ -224,7 +224,11 @@ std::vector<HardPoint> measureHard(const std::string& dir, const MeasureHooks& h
   for (const std::string& file : files) {
     if (hooks.stop()) break;
     const Scenario s = ScenarioLoader::loadFile(file);
-    points.push_back({s.name, s.settings, probeStability(s, s.settings)});
+    Settings sweeps = s.settings;
+    sweeps.solver = ContactSolver::SequentialImpulse;
+    sweeps.iterations = kHardSweeps;
+    points.push_back({s.name, s.settings, probeStability(s, s.settings), probeStability(s, sweeps),
+                      runPlainBullet(s, s.settings.timestep, s.settings.duration, 1)});
     hooks.advance(s.name);
   }
   return points;

@@ -10,6 +10,7 @@
 #include "core/Settings.h"
 #include "core/SimulationMode.h"
 #include "measure/Benchmark.h"
+#include "measure/PlainBullet.h"
 #include "measure/StabilityProbe.h"
 #include "scenario/Scenario.h"
 
@@ -67,11 +68,18 @@ std::vector<BaselinePoint> measureBaseline(std::vector<BenchScene>& scenes, cons
 struct HardPoint {
   std::string scene;
   Settings settings;
-  StabilityReport report;
+  StabilityReport report;  ///< at the scene's settings (the solver chosen per island by default)
+  StabilityReport sweeps;  ///< the same with sequential impulses, kHardSweeps iterations
+  PlainRun plain;          ///< the scene in Bullet's own default pipeline, same step and duration
 };
 
+/// The sweeps a hard case is also run with: Bullet's default count.
+inline constexpr int kHardSweeps = 10;
+
 /// Every scene in the folder `dir` (its .json files, by name) run once
-/// and probed for stability. Throws ScenarioError for a bad file.
+/// and probed for stability, and again with sequential impulses at
+/// kHardSweeps iterations and in Bullet's own default pipeline (one timed
+/// run after a warm-up). Throws ScenarioError for a bad file.
 std::vector<HardPoint> measureHard(const std::string& dir, const MeasureHooks& hooks);
 
 }  // namespace tabletop

@@ -21,6 +21,9 @@ struct PlainRun {
   double costMsPerSecond = 0;  ///< median wall time per simulated second, ms
   double simulated = 0;        ///< s
   std::vector<Vec3> centres;   ///< every entity's final centre, m
+  /// m: the farthest any entity's centre got from its start, watched
+  /// after every step of the untimed warm-up run.
+  double worstDrift = 0;
 };
 
 /// Runs `scenario` for `duration` s at `timestep`, `repeats` times after a

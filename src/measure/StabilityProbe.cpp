@@ -91,6 +91,7 @@ StabilityReport probeStability(const Scenario& scenario, const Settings& setting
   }
   r.steps = world->steps();
   r.simulated = world->time();
+  r.solverUse = world->solverUse();
   return r;
 }
 

@@ -3,6 +3,7 @@
 #include <limits>
 #include <string>
 
+#include "core/ContactSolver.h"
 #include "core/Settings.h"
 #include "scenario/Scenario.h"
 #include "sim/ScriptPlayer.h"
@@ -33,6 +34,7 @@ struct StabilityReport {
   bool complete = true;   ///< false if the divergence guard stopped the run
   std::string failure;    ///< the guard's message when not complete
   long steps = 0;
+  SolverUse solverUse;       ///< how the islands were solved over the run
   double simulated = 0.0;    ///< s
   double wallSeconds = 0.0;  ///< s, the stepping alone
   /// Milliseconds of wall time per simulated second.
