@@ -17,6 +17,7 @@ std::string_view toString(ContactSolver s) { return nameOf(s, kNames); }
 
 std::string describeUse(const SolverUse& use) {
   return "islands solved exactly " + std::to_string(use.direct) + ", by sweeps " + std::to_string(use.swept) +
+         (use.longSwept > 0 ? ", by long sweeps (a load too large to pivot) " + std::to_string(use.longSwept) : "") +
          ", by sweeps after the pivoting failed " + std::to_string(use.fallbacks);
 }
 

@@ -27,6 +27,7 @@ enum class ContactSolver { SequentialImpulse, Dantzig, Automatic };
 struct SolverUse {
   long direct = 0;     ///< exactly, by the pivoting
   long swept = 0;      ///< by sequential impulses, by choice or by size
+  long longSwept = 0;  ///< carrying a load but too large to pivot: the long sweeps (IslandSolver)
   long fallbacks = 0;  ///< meant for the pivoting, which failed on them (then swept)
 };
 

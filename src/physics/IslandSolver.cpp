@@ -1,5 +1,6 @@
 #include "physics/IslandSolver.h"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -29,14 +30,15 @@ bool isDynamic(const btCollisionObject* object) {
 IslandSolver::IslandSolver(ContactSolver choice, int rowLimit, double gravity)
     : btMLCPSolver(&dantzig_), choice_(choice), rowLimit_(rowLimit), gravity_(std::abs(gravity)) {}
 
-bool IslandSolver::solveDirectly(btPersistentManifold** manifolds, int numManifolds, int numConstraints) const {
-  if (choice_ == ContactSolver::SequentialImpulse || numConstraints != 0) return false;
+IslandSolver::Way IslandSolver::chooseWay(btPersistentManifold** manifolds, int numManifolds,
+                                         int numConstraints) const {
+  if (choice_ == ContactSolver::SequentialImpulse || numConstraints != 0) return Way::Sweep;
   // Rows before setup: a normal and at most two friction rows per point.
   long rows = 0;
   for (int m = 0; m < numManifolds; ++m) rows += 3L * manifolds[m]->getNumContacts();
-  if (rows > rowLimit_) return false;
-  if (choice_ == ContactSolver::Dantzig) return true;
-  if (gravity_ == 0) return false;
+  const bool fits = rows <= rowLimit_;
+  if (choice_ == ContactSolver::Dantzig) return fits ? Way::Pivot : Way::Sweep;
+  if (gravity_ == 0) return Way::Sweep;
   bool slides = false;
   bool sunk = false;
   for (int m = 0; m < numManifolds; ++m) {
@@ -47,14 +49,16 @@ bool IslandSolver::solveDirectly(btPersistentManifold** manifolds, int numManifo
       if (point.getDistance() > kLoadTouching) continue;
       // A load is pivoted wherever its points are: a body pressed into
       // the table under a heavier one must not be left to the sweeps.
-      if (bothDynamic && std::abs(point.m_normalWorldOnB.y()) >= kLoadNormal) return true;
+      if (bothDynamic && std::abs(point.m_normalWorldOnB.y()) >= kLoadNormal) {
+        return fits ? Way::Pivot : Way::LongSweeps;
+      }
       sunk = sunk || point.getDistance() < -kLoadTouching;
       slides = slides || slipSpeed(*manifold, point) > kSlideSpeed;
     }
   }
   // A slide with a point sunk in (a landing) is left to the sweeps' split
   // impulse.
-  return slides && !sunk;
+  return fits && slides && !sunk ? Way::Pivot : Way::Sweep;
 }
 
 void IslandSolver::convertContacts(btPersistentManifold** manifolds, int numManifolds,
@@ -128,9 +132,10 @@ btScalar IslandSolver::solveGroupCacheFriendlySetup(btCollisionObject** bodies, 
                                                     btPersistentManifold** manifolds, int numManifolds,
                                                     btTypedConstraint** constraints, int numConstraints,
                                                     const btContactSolverInfo& info, btIDebugDraw* debugDrawer) {
-  directNow_ = !sweepsOnly_ && solveDirectly(manifolds, numManifolds, numConstraints);
+  way_ = sweepsOnly_ ? Way::Sweep : chooseWay(manifolds, numManifolds, numConstraints);
   counted_ = !sweepsOnly_ && numManifolds > 0;
-  if (directNow_) {
+  if (way_ == Way::LongSweeps) longSweepsTaken_ = true;
+  if (way_ == Way::Pivot) {
     btContactSolverInfo direct = info;
     direct.m_globalCfm = kDirectCfm;
     direct.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
@@ -145,7 +150,18 @@ btScalar IslandSolver::solveGroupCacheFriendlyIterations(btCollisionObject** bod
                                                          btPersistentManifold** manifolds, int numManifolds,
                                                          btTypedConstraint** constraints, int numConstraints,
                                                          const btContactSolverInfo& info, btIDebugDraw* debugDrawer) {
-  if (!directNow_) {
+  if (way_ == Way::LongSweeps) {
+    if (counted_) ++use_.longSwept;
+    btContactSolverInfo many = info;
+    many.m_numIterations = std::max(info.m_numIterations, kLongSweeps);
+    // The scene's own tolerance when it asks for a finer one (0: none).
+    const btScalar tolerance2 = kLongSweepTolerance * kLongSweepTolerance;
+    const btScalar own = info.m_leastSquaresResidualThreshold;
+    many.m_leastSquaresResidualThreshold = own > 0 ? std::min(own, tolerance2) : tolerance2;
+    return btSequentialImpulseConstraintSolver::solveGroupCacheFriendlyIterations(
+        bodies, numBodies, manifolds, numManifolds, constraints, numConstraints, many, debugDrawer);
+  }
+  if (way_ == Way::Sweep) {
     if (counted_) ++use_.swept;
     return btSequentialImpulseConstraintSolver::solveGroupCacheFriendlyIterations(
         bodies, numBodies, manifolds, numManifolds, constraints, numConstraints, info, debugDrawer);

@@ -333,7 +333,13 @@ void World::step() {
     trackers_[i].lastCentre = entities_[i]->position();
     trackers_[i].lastVelocity = entities_[i]->body()->getLinearVelocity();
   }
-  const int n = substeps();
+  int n = substeps();
+  // An island that carried a load too large to pivot in the last step is
+  // swept long, and in parts no longer than those sweeps hold it in.
+  if (pipeline_.solver->takeLongSweeps() && settings_.maxSubsteps > 1) {
+    const int loaded = static_cast<int>(std::ceil(settings_.timestep / IslandSolver::kLongSweepStep - 1e-9));
+    n = std::min(std::max(n, loaded), settings_.maxSubsteps);
+  }
   for (int k = 0; k < n; ++k) world_->step(settings_.timestep / n);
   ++steps_;
   time_ = static_cast<double>(steps_) * settings_.timestep;

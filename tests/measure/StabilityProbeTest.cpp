@@ -89,16 +89,24 @@ TEST(HardCase, MassRatiosRestWithTheDirectSolver) {
   EXPECT_GT(iterative.worstDrift, 0.1);
 }
 
-// A pyramid of 55 cubes ten wide stands for 60 s: no cube drifts more
-// than 5 mm (measured 2.1 mm) and in the last second nothing moves faster
-// than 0.1 mm/s (measured 0.16 um/s).
+// A pyramid of 55 cubes ten wide stands for 60 s at 60 Hz with no other
+// settings: no cube drifts more than 2 mm (measured 1.76 mm) and in the
+// last second nothing moves faster than 0.1 mm/s (measured 0.1 um/s). Its
+// one island is too large to pivot, so `auto` gives it the long sweeps in
+// 1/120 s parts (IslandSolver::kLongSweeps); with the plain 10 sweeps it
+// falls, which the last lines hold as the reason for them.
 TEST(HardCase, PyramidStands) {
   const Scenario s = hard("pyramid_55");
   const StabilityReport r = probeStability(s, s.settings);
   ASSERT_TRUE(r.complete) << r.failure;
   EXPECT_NEAR(r.simulated, 60.0, 1e-9);
-  EXPECT_LE(r.worstDrift, 5e-3);
+  EXPECT_LE(r.worstDrift, 2e-3);
   EXPECT_LE(r.restSpeed, 1e-4);
+  EXPECT_GT(r.solverUse.longSwept, 0);
+  Settings sweeps = s.settings;
+  sweeps.solver = ContactSolver::SequentialImpulse;
+  sweeps.duration = 10.0;
+  EXPECT_GT(probeStability(s, sweeps).worstDrift, 0.1);
 }
 
 // A 1 cm sphere thrown down at 30 m/s never passes through the 4 cm top at
