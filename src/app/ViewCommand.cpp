@@ -38,8 +38,8 @@ int viewScenario(const ViewOptions& options, std::ostream& err) {
   try {
     Scenario scenario = loadScenario(options.run.scenarios.front(), options.run);
     const CameraChoice camera = std::get<CameraChoice>(CameraChoice::parse(options.camera));
-    if (const std::string problem = camera.problemWith(scenario); !problem.empty()) {
-      err << "tabletop view: --camera: " << problem << "\n";
+    if (const std::string cameraProblem = camera.problemWith(scenario); !cameraProblem.empty()) {
+      err << "tabletop view: --camera: " << cameraProblem << "\n";
       return kExitBadInput;
     }
     const Settings settings = scenario.settings;

@@ -1,5 +1,7 @@
 #include "draw/CameraChoice.h"
 
+#include "draw/SceneDrawing.h"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -77,9 +79,23 @@ std::string CameraChoice::help() {
          "target, metres)";
 }
 
+std::variant<CameraChoice, std::string> CameraChoice::forScene(const std::string& text, const Scenario& scenario) {
+  auto parsed = parse(text);
+  if (const auto* choice = std::get_if<CameraChoice>(&parsed)) {
+    if (std::string problem = choice->problemWith(scenario); !problem.empty()) return problem;
+  }
+  return parsed;
+}
+
 std::string CameraChoice::problemWith(const Scenario& scenario) const {
   if (kind != Kind::Follow || entityNamed(scenario, name)) return "";
   return "follow: no entity is named '" + shownText(name) + "' in " + shownText(scenario.name);
+}
+
+SceneExtent SceneExtent::of(const Scenario& scenario, const std::vector<EntityState>& states) {
+  SceneExtent extent;
+  extent.add(sceneBounds(scenario, states));
+  return extent;
 }
 
 void SceneExtent::add(const std::vector<Camera::Bound>& bounds) {

@@ -27,6 +27,9 @@ struct CameraChoice {
   static std::variant<CameraChoice, std::string> parse(const std::string& text);
   /// One line for --help: every form and the default.
   static std::string help();
+  /// parse(), then problemWith(): the choice for `scenario`, or why there
+  /// is none (one line).
+  static std::variant<CameraChoice, std::string> forScene(const std::string& text, const Scenario& scenario);
   /// Why `scenario` cannot be shown this way (follow names no entity), or "".
   std::string problemWith(const Scenario& scenario) const;
 };
@@ -36,6 +39,8 @@ struct CameraChoice {
 /// run before drawing the first, so nothing leaves the picture).
 class SceneExtent {
  public:
+  /// The box of the table and the entities at `states` alone.
+  static SceneExtent of(const Scenario& scenario, const std::vector<EntityState>& states);
   void add(const std::vector<Camera::Bound>& bounds);
   bool empty() const { return empty_; }
   /// The box's eight corners, as balls of no radius: a view holding them

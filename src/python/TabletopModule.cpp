@@ -134,20 +134,16 @@ class Stepper {
     if (width < 1 || height < 1 || width > 8192 || height > 8192) {
       throw py::value_error("render: expected a width and height from 1 to 8192 pixels");
     }
-    const auto parsed = CameraChoice::parse(cameraName);
-    if (const auto* why = std::get_if<std::string>(&parsed)) throw py::value_error("render: camera: " + *why);
-    const CameraChoice& choice = std::get<CameraChoice>(parsed);
-    if (const std::string problem = choice.problemWith(*scenario_); !problem.empty()) {
-      throw py::value_error("render: camera: " + problem);
-    }
+    const auto chosen = CameraChoice::forScene(cameraName, *scenario_);
+    if (const auto* why = std::get_if<std::string>(&chosen)) throw py::value_error("render: camera: " + *why);
+    const CameraChoice& choice = std::get<CameraChoice>(chosen);
     const std::vector<EntityState> states = simulation_->snapshot();
-    SceneExtent now;
-    now.add(sceneBounds(*scenario_, states));
     const HeadlessFrames frames(width, height);
     DrawOptions options;
     options.arrow = arrow;
     const Image image = frames.draw(makeDrawList(*scenario_, states, player_->arrow(), {}, options),
-                                    cameraFor(choice, *scenario_, states, now, double(width) / height));
+                                    cameraFor(choice, *scenario_, states, SceneExtent::of(*scenario_, states),
+                                              double(width) / height));
     py::array_t<std::uint8_t> out({height, width, 3});
     std::copy(image.rgb.begin(), image.rgb.end(), out.mutable_data());
     return out;

@@ -49,15 +49,11 @@ ViewerSession::ViewerSession(Scenario scenario, Settings settings, ViewerSetting
   }
   build(viewer_.playScript);
   // The camera (the command has checked the choice against the scene).
-  const auto parsed = CameraChoice::parse(viewer_.camera);
-  if (const auto* why = std::get_if<std::string>(&parsed)) throw std::invalid_argument("camera: " + *why);
-  const CameraChoice& choice = std::get<CameraChoice>(parsed);
-  if (const std::string problem = choice.problemWith(scenario_); !problem.empty()) {
-    throw std::invalid_argument("camera: " + problem);
-  }
-  SceneExtent now;
-  now.add(sceneBounds(scenario_, simulation_->snapshot()));
-  camera_ = cameraFor(choice, scenario_, simulation_->snapshot(), now, viewer_.aspect);
+  const auto chosen = CameraChoice::forScene(viewer_.camera, scenario_);
+  if (const auto* why = std::get_if<std::string>(&chosen)) throw std::invalid_argument("camera: " + *why);
+  const CameraChoice& choice = std::get<CameraChoice>(chosen);
+  const std::vector<EntityState> states = simulation_->snapshot();
+  camera_ = cameraFor(choice, scenario_, states, SceneExtent::of(scenario_, states), viewer_.aspect);
   if (choice.kind == CameraChoice::Kind::Follow) followed_ = choice.name;
 }
 
@@ -98,9 +94,7 @@ void ViewerSession::cycleArrow() {
 }
 
 void ViewerSession::fitCamera(double aspect) {
-  SceneExtent now;
-  now.add(sceneBounds(scenario_, simulation_->snapshot()));
-  camera_.fit(now.corners(), aspect);
+  camera_.fit(SceneExtent::of(scenario_, simulation_->snapshot()).corners(), aspect);
   camera_.farPlane = std::max(camera_.farPlane, 4.0 * camera_.distance);
   followed_.clear();
   message_ = "view fitted to the scene";

@@ -106,8 +106,7 @@ TEST(CameraChoice, FitFramesEveryShippedSceneAndFollowCentresItsEntity) {
     if (f.path().extension() != ".json") continue;
     const Scenario scene = ScenarioLoader::loadFile(f.path().string());
     const std::vector<EntityState> states = startStates(scene);
-    SceneExtent extent;
-    extent.add(sceneBounds(scene, states));
+    const SceneExtent extent = SceneExtent::of(scene, states);
     const Camera fitted = cameraFor(parsed("fit"), scene, states, extent, double(kWidth) / kHeight);
     for (const Camera::Bound& b : sceneBounds(scene, states)) EXPECT_TRUE(inView(fitted, b)) << f.path();
     for (std::size_t i = 0; i < states.size(); ++i) {
@@ -128,6 +127,14 @@ TEST(CameraChoice, FollowMustNameAnEntityOfTheScene) {
   EXPECT_EQ(parsed("follow:A").problemWith(scene), "");
   EXPECT_NE(parsed("follow:C").problemWith(scene).find("no entity is named 'C'"), std::string::npos);
   EXPECT_EQ(parsed("fit").problemWith(scene), "");
+  // forScene does both: the form, then the scene.
+  EXPECT_TRUE(std::holds_alternative<CameraChoice>(CameraChoice::forScene("follow:A", scene)));
+  const auto unknown = CameraChoice::forScene("follow:C", scene);
+  ASSERT_TRUE(std::holds_alternative<std::string>(unknown));
+  EXPECT_NE(std::get<std::string>(unknown).find("no entity is named 'C'"), std::string::npos);
+  const auto malformed = CameraChoice::forScene("sideways", scene);
+  ASSERT_TRUE(std::holds_alternative<std::string>(malformed));
+  EXPECT_EQ(std::get<std::string>(malformed), std::get<std::string>(CameraChoice::parse("sideways")));
 }
 
 }  // namespace
