@@ -155,7 +155,7 @@ ResultTable hardTable(const std::vector<HardPoint>& points) {
                {"sweeps_complete", ""},
                {"bullet_cost_ms_per_s", "Bullet: cost"},
                {"bullet_worst_drift_m", "drift [mm]"}};
-  const auto millimetres = [](double metres) { return cell(metres, fixed(1e3 * metres, 3)); };
+  const auto millimetres = [](double metres) { return errorCell(metres, true, 3); };
   for (const HardPoint& p : points) {
     const StabilityReport& r = p.report;
     const StabilityReport& w = p.sweeps;

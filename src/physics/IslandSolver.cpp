@@ -90,17 +90,20 @@ void IslandSolver::dropSlidingCrossFriction(double timeStep) {
 bool IslandSolver::solveMLCP(const btContactSolverInfo& info) {
   if (m_A.rows() == 0) return true;
   if (!info.m_splitImpulse) return btMLCPSolver::solveMLCP(info);
-  // The normal rows (those no friction row depends on as its limit's
-  // source, i.e. not friction rows themselves), before the pivoting
-  // overwrites the matrix.
-  std::vector<int> normals;
+  // The normal rows: those whose limits hang on no other row (a friction
+  // row's hang on its normal's). Kept in members: this runs every step of
+  // every pivoted island.
+  std::vector<int>& normals = split_.rows;
+  normals.clear();
   for (int i = 0; i < m_limitDependencies.size(); ++i) {
     if (m_limitDependencies[i] < 0) normals.push_back(i);
   }
   const int n = static_cast<int>(normals.size());
-  btMatrixXu a(n, n);
-  btVectorXu b(n), x(n), lo(n), hi(n);
+  btMatrixXu& a = split_.a;
+  btVectorXu &b = split_.b, &x = split_.x, &lo = split_.lo, &hi = split_.hi;
+  a.resize(n, n);
   a.setZero();
+  b.resize(n), x.resize(n), lo.resize(n), hi.resize(n);
   for (int r = 0; r < n; ++r) {
     for (int c = 0; c < n; ++c) {
       const btScalar v = m_A(normals[r], normals[c]);
@@ -120,8 +123,9 @@ bool IslandSolver::solveMLCP(const btContactSolverInfo& info) {
   // its exact velocities and takes out no penetration.
   m_xSplit.resize(m_A.rows());
   m_xSplit.setZero();
-  btAlignedObjectArray<int> none;
-  none.resize(n, -1);
+  btAlignedObjectArray<int>& none = split_.noLimits;
+  none.resize(n);
+  for (int r = 0; r < n; ++r) none[r] = -1;
   if (n > 0 && m_solver->solveMLCP(a, b, x, lo, hi, none, info.m_numIterations)) {
     for (int r = 0; r < n; ++r) m_xSplit[normals[r]] = x[r];
   }

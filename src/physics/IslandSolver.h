@@ -1,5 +1,7 @@
 #pragma once
 
+#include <vector>
+
 #include <BulletDynamics/MLCPSolvers/btDantzigSolver.h>
 #include <BulletDynamics/MLCPSolvers/btMLCPSolver.h>
 
@@ -86,6 +88,13 @@ class IslandSolver : public btMLCPSolver {
   void dropSlidingCrossFriction(double timeStep);
 
   btDantzigSolver dantzig_;
+  // The push out of penetration's problem on the normal rows (solveMLCP).
+  struct NormalRows {
+    std::vector<int> rows;  // their indices in the whole island's problem
+    btMatrixXu a;
+    btVectorXu b, x, lo, hi;
+    btAlignedObjectArray<int> noLimits;  // -1 each: no row bounds another
+  } split_;
   ContactSolver choice_;
   int rowLimit_;
   double gravity_;          // m/s^2, its magnitude
