@@ -49,6 +49,39 @@ int keptPointWithin(const btPersistentManifold& manifold, const btManifoldPoint&
 // slide since. 1 um keeps the resting points of bodies that creep.
 constexpr double kStaleDrift = 1e-6;
 
+// A ball against a box meets the box's outer surface, sharp at its edges
+// and corners. GJK rounds a box's edges by its margin (1 mm for the table
+// top), so a ball rolled off the edge a millimetre early, and slid over the
+// rounding with a tilted normal that pushed it on. From the ball's centre
+// and the box, for a ball on either side of the pair: the normal on B, the
+// point on B and the distance; false (GJK's point stands) unless the pair
+// is a ball and a box with the centre outside the box.
+bool ballOnSharpBox(const btCollisionObjectWrapper& a, const btCollisionObjectWrapper& b, btVector3& normalOnB,
+                    btVector3& pointOnB, btScalar& depth) {
+  const bool ballIsA = a.getCollisionShape()->getShapeType() == SPHERE_SHAPE_PROXYTYPE &&
+                       b.getCollisionShape()->getShapeType() == BOX_SHAPE_PROXYTYPE;
+  const bool ballIsB = b.getCollisionShape()->getShapeType() == SPHERE_SHAPE_PROXYTYPE &&
+                       a.getCollisionShape()->getShapeType() == BOX_SHAPE_PROXYTYPE;
+  if (!ballIsA && !ballIsB) return false;
+  const btCollisionObjectWrapper& ball = ballIsA ? a : b;
+  const btCollisionObjectWrapper& box = ballIsA ? b : a;
+  const btScalar radius = static_cast<const btSphereShape*>(ball.getCollisionShape())->getRadius();
+  const btVector3 half = static_cast<const btBoxShape*>(box.getCollisionShape())->getHalfExtentsWithMargin();
+  const btTransform& place = box.getWorldTransform();
+  const btVector3 centre = place.invXform(ball.getWorldTransform().getOrigin());
+  btVector3 nearest = centre;
+  for (int i = 0; i < 3; ++i) nearest[i] = std::clamp(centre[i], -half[i], half[i]);
+  const btVector3 out = centre - nearest;
+  const btScalar reach = out.length();
+  if (!(reach > 0)) return false;  // the centre inside the box
+  const btVector3 fromBox = place.getBasis() * (out / reach);  // world, box towards ball
+  const btVector3 onBox = place * nearest;
+  depth = reach - radius;
+  normalOnB = ballIsA ? fromBox : -fromBox;
+  pointOnB = ballIsA ? onBox : place.getBasis() * centre + place.getOrigin() - fromBox * radius;
+  return true;
+}
+
 }  // namespace
 
 ContactResult::ContactResult(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1)
@@ -58,15 +91,16 @@ double ContactResult::mergeRadius(const btCollisionShape& a, const btCollisionSh
   return std::min(breakingThreshold, kShareOfExtent * std::min(smallestExtent(a), smallestExtent(b)));
 }
 
-void ContactResult::addContactPoint(const btVector3& normalOnBInWorld, const btVector3& pointInWorld,
-                                    btScalar depth) {
+void ContactResult::addContactPoint(const btVector3& foundNormal, const btVector3& foundPoint, btScalar foundDepth) {
   btPersistentManifold& manifold = *m_manifoldPtr;
-  if (depth > manifold.getContactBreakingThreshold()) return;
-
   // The manifold's body A may be this result's body 1.
   const bool swapped = manifold.getBody0() != m_body0Wrap->getCollisionObject();
   const btCollisionObjectWrapper& a = swapped ? *m_body1Wrap : *m_body0Wrap;
   const btCollisionObjectWrapper& b = swapped ? *m_body0Wrap : *m_body1Wrap;
+  btVector3 normalOnBInWorld = foundNormal, pointInWorld = foundPoint;
+  btScalar depth = foundDepth;
+  ballOnSharpBox(a, b, normalOnBInWorld, pointInWorld, depth);
+  if (depth > manifold.getContactBreakingThreshold()) return;
   const btVector3 pointOnA = pointInWorld + normalOnBInWorld * depth;
   btManifoldPoint point(a.getCollisionObject()->getWorldTransform().invXform(pointOnA),
                         b.getCollisionObject()->getWorldTransform().invXform(pointInWorld), normalOnBInWorld,

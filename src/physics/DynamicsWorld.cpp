@@ -7,6 +7,7 @@
 #include "core/Material.h"
 #include "physics/ContactMaterial.h"
 #include "physics/ContactResult.h"
+#include "physics/FaceEdges.h"
 #include "physics/Impacts.h"
 
 namespace tabletop {
@@ -264,9 +265,10 @@ void DynamicsWorld::solveConstraints(btContactSolverInfo& solverInfo) {
   resolveTouchingImpacts(solverInfo);
   const ImpactScan scan(*dispatcher, bounced_);
   if (mayCut_) {
-    const double cut = std::min(scan.earliestImpact(partLength_, kBounceSpeed),
-                                scan.earliestSeparatedImpact(*getBroadphase()->getOverlappingPairCache(),
-                                                             partLength_, kBounceSpeed));
+    const double cut = std::min({scan.earliestImpact(partLength_, kBounceSpeed),
+                                 scan.earliestSeparatedImpact(*getBroadphase()->getOverlappingPairCache(),
+                                                              partLength_, kBounceSpeed),
+                                 earliestFaceExit(*dispatcher, partLength_)});
     if (cut < partLength_) {
       scaleCarriedImpulses(cut / partLength_);
       partLength_ = cut;
@@ -306,6 +308,7 @@ void DynamicsWorld::solveConstraints(btContactSolverInfo& solverInfo) {
   }
   const std::vector<std::pair<const btPersistentManifold*, const btManifoldPoint*>> slipping = slippingPoints();
   if (secondOrder_) scan.holdMeanVelocity(partLength_, heldGaps_);
+  holdEdgeCurvature(*dispatcher, partLength_, secondOrder_, heldGaps_);
   btDiscreteDynamicsWorld::solveConstraints(solverInfo);
   solved_ = true;
   stopped_.clear();
@@ -319,7 +322,8 @@ void DynamicsWorld::solveConstraints(btContactSolverInfo& solverInfo) {
     point->m_appliedImpulseLateral1 = impulses.y();
     point->m_appliedImpulseLateral2 = impulses.z();
   }
-  for (const auto& [point, distance] : heldGaps_) point->setDistance(distance);
+  // Backwards: a point held twice gets its first, true gap back.
+  for (auto held = heldGaps_.rbegin(); held != heldGaps_.rend(); ++held) held->first->setDistance(held->second);
   heldGaps_.clear();
   bounced_.clear();
   solverInfo.m_numIterations = iterations;

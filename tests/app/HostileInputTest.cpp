@@ -175,9 +175,11 @@ using namespace tabletop::testing;
 // the table top: the run says so and stops (status 3), rather than report
 // the light cube OnTable inside the top.
 TEST(HostileInput, ABodyPassingThroughTheTableTopIsADivergence) {
-  // By sweeps: the exact solver holds even this load (1e9 : 1) up.
+  // By few sweeps: the exact solver holds even this load (1e9 : 1) up, and
+  // at 8 to 10 sweeps the light cube is squeezed out sideways instead (1 to
+  // 6 all pass it through).
   const std::string file = writeTemp("hostile_heavy.json", R"({"version": 1, "name": "heavy",
-    "settings": {"solver": "sequential_impulse"}, "entities": [
+    "settings": {"solver": "sequential_impulse", "iterations": 4}, "entities": [
     {"name": "L", "shape": "cube", "size": 0.1, "position": [0, 0], "mass": 1e-4},
     {"name": "H", "shape": "cube", "size": 0.1, "position": [0, 0], "on": "L", "mass": 1e5}]})");
   const Outcome o = runArgs({"run", file});

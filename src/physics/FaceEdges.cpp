@@ -1,0 +1,151 @@
+#include "physics/FaceEdges.h"
+
+#include <BulletCollision/CollisionShapes/btCompoundShape.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "physics/Impacts.h"
+
+namespace tabletop {
+namespace {
+
+// How far, m, a point may lie outside a box and still be on it (contact
+// points are found a few nanometres apart), and how close to an edge a
+// centre counts as on it.
+constexpr double kOnBox = 1e-5;
+constexpr double kOnEdge = 1e-9;
+
+// A cut no shorter than this share of the part: a centre that close to the
+// edge counts as on it (edgeBand).
+constexpr double kShortestCut = 1e-3;
+
+// How near, m, an edge a centre moving across it at `speed` m/s counts as
+// on it in a part `length` s long.
+double edgeBand(double speed, double length) { return std::max(kOnEdge, kShortestCut * std::fabs(speed) * length); }
+
+struct BoxPiece {
+  btTransform place;  // the box's frame in the world
+  btVector3 half;     // its outer half extents
+};
+
+// The box of `object` (itself, or a compound's child) that `point` lies on.
+std::optional<BoxPiece> boxAt(const btCollisionObject& object, const btVector3& point) {
+  const auto onIt = [&](const btCollisionShape* shape, const btTransform& place) -> std::optional<BoxPiece> {
+    if (shape->getShapeType() != BOX_SHAPE_PROXYTYPE) return std::nullopt;
+    const btVector3 half = static_cast<const btBoxShape*>(shape)->getHalfExtentsWithMargin();
+    const btVector3 local = place.invXform(point);
+    for (int i = 0; i < 3; ++i) {
+      if (std::fabs(local[i]) > half[i] + kOnBox) return std::nullopt;
+    }
+    return BoxPiece{place, half};
+  };
+  const btCollisionShape* shape = object.getCollisionShape();
+  if (!shape->isCompound()) return onIt(shape, object.getWorldTransform());
+  const auto* compound = static_cast<const btCompoundShape*>(shape);
+  for (int c = 0; c < compound->getNumChildShapes(); ++c) {
+    if (auto box = onIt(compound->getChildShape(c), object.getWorldTransform() * compound->getChildTransform(c))) {
+      return box;
+    }
+  }
+  return std::nullopt;
+}
+
+const btRigidBody* movingBody(const btCollisionObject* object) {
+  const btRigidBody* body = btRigidBody::upcast(object);
+  return body && !body->isStaticOrKinematicObject() && body->isActive() ? body : nullptr;
+}
+
+// The velocity of `body`'s centre relative to `support` there, in `box`'s frame.
+btVector3 relativeVelocity(const btRigidBody& body, const btCollisionObject& support, const BoxPiece& box) {
+  btVector3 v = body.getLinearVelocity();
+  if (const btRigidBody* under = btRigidBody::upcast(&support)) {
+    v -= under->getVelocityInLocalPoint(body.getCenterOfMassPosition() - under->getCenterOfMassPosition());
+  }
+  return box.place.getBasis().transpose() * v;
+}
+
+}  // namespace
+
+double earliestFaceExit(btDispatcher& dispatcher, double horizon) {
+  double earliest = horizon;
+  for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
+    const btPersistentManifold& manifold = *dispatcher.getManifoldByIndexInternal(m);
+    for (int p = 0; p < manifold.getNumContacts(); ++p) {
+      const btManifoldPoint& point = manifold.getContactPoint(p);
+      if (point.getDistance() > kOnBox) continue;
+      // Either body may be the one carried; the normal points from B to A.
+      for (const bool carriedIsA : {true, false}) {
+        const btRigidBody* body = movingBody(carriedIsA ? manifold.getBody0() : manifold.getBody1());
+        const btCollisionObject& support = *(carriedIsA ? manifold.getBody1() : manifold.getBody0());
+        if (!body || body->getGravity().length2() == 0) continue;
+        const auto box = boxAt(support, carriedIsA ? point.getPositionWorldOnB() : point.getPositionWorldOnA());
+        if (!box) continue;
+        const btVector3 normal = carriedIsA ? point.m_normalWorldOnB : -point.m_normalWorldOnB;
+        if (normal.dot(-body->getGravity().normalized()) < 0.7) continue;  // not carried from below
+        const btVector3 local = box->place.getBasis().transpose() * normal;
+        const int face = local.closestAxis();
+        if (std::fabs(local[face]) < 0.999) continue;  // an edge or a corner, not a face
+        const btVector3 centre = box->place.invXform(body->getCenterOfMassPosition());
+        const btVector3 v = relativeVelocity(*body, support, *box);
+        for (int i = 0; i < 3; ++i) {
+          if (i == face || v[i] == 0) continue;
+          const double left = box->half[i] - (v[i] > 0 ? centre[i] : -centre[i]);
+          if (!(left > edgeBand(v[i], horizon))) continue;
+          earliest = std::min(earliest, (left + kOnEdge) / std::fabs(v[i]));
+        }
+      }
+    }
+  }
+  return earliest;
+}
+
+void holdEdgeCurvature(btDispatcher& dispatcher, double length, bool meanVelocity,
+                       std::vector<std::pair<btManifoldPoint*, btScalar>>& saved) {
+  for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
+    btPersistentManifold& manifold = *dispatcher.getManifoldByIndexInternal(m);
+    for (int p = 0; p < manifold.getNumContacts(); ++p) {
+      btManifoldPoint& point = manifold.getContactPoint(p);
+      for (const bool ballIsA : {true, false}) {
+        const btRigidBody* ball = movingBody(ballIsA ? manifold.getBody0() : manifold.getBody1());
+        if (!ball || ball->getCollisionShape()->getShapeType() != SPHERE_SHAPE_PROXYTYPE) continue;
+        const btCollisionObject& support = *(ballIsA ? manifold.getBody1() : manifold.getBody0());
+        const auto box = boxAt(support, ballIsA ? point.getPositionWorldOnB() : point.getPositionWorldOnA());
+        if (!box) continue;
+        // The box's nearest point to the centre, sharp (its outer extents);
+        // an axis the centre is past (or on the edge of) is pinned there.
+        const btVector3 centre = box->place.invXform(ball->getCenterOfMassPosition());
+        btVector3 v = relativeVelocity(*ball, support, *box);
+        btVector3 nearest = centre;
+        int pinned = 0;
+        bool along[3] = {true, true, true};
+        for (int i = 0; i < 3; ++i) {
+          if (std::fabs(centre[i]) < box->half[i] - edgeBand(v[i], length)) continue;
+          nearest[i] = std::copysign(box->half[i], centre[i]);
+          along[i] = false;
+          ++pinned;
+        }
+        if (pinned < 2) continue;  // over a face: the distance is linear in the motion
+        const btVector3 out = centre - nearest;
+        const double reach = out.length();
+        if (!(reach > 0)) continue;
+        const btVector3 n = out / reach;
+        for (int i = 0; i < 3; ++i) {
+          if (along[i]) v[i] = 0;  // along an edge the distance does not change
+        }
+        const btVector3 across = v - n * v.dot(n);
+        const double growth = across.length2() * length * length / (2.0 * reach);
+        if (!(growth > 0)) continue;
+        // The gap the row sees: the end gap with the growth; with positions
+        // that follow the mean velocity, as ImpactScan::holdMeanVelocity.
+        const double gap = point.getDistance() + growth;
+        const double mean = 2.0 * gap - closingSpeed(manifold, point) * length;
+        saved.emplace_back(&point, point.getDistance());
+        point.setDistance(meanVelocity && mean > gap ? mean : gap);
+      }
+    }
+  }
+}
+
+}  // namespace tabletop

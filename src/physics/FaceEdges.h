@@ -1,0 +1,40 @@
+#pragma once
+
+#include <utility>
+#include <vector>
+
+#include <btBulletDynamicsCommon.h>
+
+namespace tabletop {
+
+/// Bodies leaving the face of a box that carries them (the table top, a
+/// cube under a rider): the report's "drops off once its centre passes
+/// the edge", at its own time inside a step.
+///
+/// A part's contacts are found at its start and the solver holds them for
+/// the whole part, so a body whose centre passed the edge inside a part
+/// stayed carried to the part's end: a cube began to tip, a ball to fall,
+/// up to a part's travel late (a ball at 2 m/s landed up to 17 mm long at
+/// 60 Hz, depending on where in a step it met the edge). The part is now
+/// cut where the centre reaches the edge (DynamicsWorld), and a ball's row
+/// at an edge counts the curvature of its path about it.
+
+/// The earliest time within `horizon`, s, at which the centre of a body
+/// touching the upward face of a box reaches that face's edge, moving at
+/// its velocity relative to the box; `horizon` if none, or if the centre
+/// is already within a thousandth of the part's travel of it.
+double earliestFaceExit(btDispatcher& dispatcher, double horizon);
+
+/// Readies the rows of balls at a box's edge or corner (the centre past
+/// the face) for a part `length` s long. Bullet's row is the distance's
+/// first-order change; about an edge the distance also grows with the
+/// square of the ball's speed across it, v^2 t^2 / (2 R), R the centre's
+/// distance from the edge. Without it a ball leaving the edge faster than
+/// sqrt(g R) was held up for a part. Each such point's gap is raised by
+/// that growth over the part (and, with `meanVelocity`, for positions that
+/// follow the mean of the part's velocities); `saved` gets the points and
+/// their gaps, to be put back after the solve.
+void holdEdgeCurvature(btDispatcher& dispatcher, double length, bool meanVelocity,
+                       std::vector<std::pair<btManifoldPoint*, btScalar>>& saved);
+
+}  // namespace tabletop
