@@ -309,6 +309,7 @@ void DynamicsWorld::solveConstraints(btContactSolverInfo& solverInfo) {
   const std::vector<std::pair<const btPersistentManifold*, const btManifoldPoint*>> slipping = slippingPoints();
   if (secondOrder_) scan.holdMeanVelocity(partLength_, heldGaps_);
   holdEdgeCurvature(*dispatcher, partLength_, secondOrder_, heldGaps_);
+  holdEdgeLevers(*dispatcher, partLength_, heldPlaces_);
   btDiscreteDynamicsWorld::solveConstraints(solverInfo);
   solved_ = true;
   stopped_.clear();
@@ -325,6 +326,11 @@ void DynamicsWorld::solveConstraints(btContactSolverInfo& solverInfo) {
   // Backwards: a point held twice gets its first, true gap back.
   for (auto held = heldGaps_.rbegin(); held != heldGaps_.rend(); ++held) held->first->setDistance(held->second);
   heldGaps_.clear();
+  for (auto held = heldPlaces_.rbegin(); held != heldPlaces_.rend(); ++held) {
+    held->point->m_positionWorldOnA = held->onA;
+    held->point->m_positionWorldOnB = held->onB;
+  }
+  heldPlaces_.clear();
   bounced_.clear();
   solverInfo.m_numIterations = iterations;
   if (impacts) forgetImpacts();

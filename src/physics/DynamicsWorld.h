@@ -9,6 +9,7 @@
 
 #include "physics/ContactIslands.h"
 #include "physics/ContactResult.h"
+#include "physics/FaceEdges.h"
 
 namespace tabletop {
 
@@ -33,7 +34,10 @@ namespace tabletop {
 ///     iterations;
 ///  6. impulses carried into a part of another length are scaled by the
 ///     ratio of the lengths; a part shorter than the step carries on what
-///     it was given.
+///     it was given;
+///  7. a body leaves the box face under it at its own time: a part ends
+///     where its centre reaches the face's edge, and the rows there see the
+///     part's motion (FaceEdges.h).
 class DynamicsWorld : public btDiscreteDynamicsWorld {
  public:
   /// Bullet's world with its islands joined by contacts (ContactIslands).
@@ -96,6 +100,7 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   bool mayCut_ = false;      // the part may end at an impact
   bool solved_ = false;      // a solve has run: contacts carry their loads
   std::vector<std::pair<btManifoldPoint*, btScalar>> heldGaps_;
+  std::vector<HeldPlace> heldPlaces_;
   std::vector<btManifoldPoint*> bounced_;  // points bounced at the start of the part
   std::unordered_set<const btCollisionObject*> stopped_;  // bodies a closing point stopped in the last solve
   // Bodies whose slip friction stopped inside the last solve's part: the

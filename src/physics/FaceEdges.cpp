@@ -21,6 +21,10 @@ constexpr double kOnEdge = 1e-9;
 // edge counts as on it (edgeBand).
 constexpr double kShortestCut = 1e-3;
 
+// The farthest a body may move across an edge in a part, as a share of its
+// smallest half extent, for its lever there to be held at mid-part.
+constexpr double kLeverTravel = 0.1;
+
 // How near, m, an edge a centre moving across it at `speed` m/s counts as
 // on it in a part `length` s long.
 double edgeBand(double speed, double length) { return std::max(kOnEdge, kShortestCut * std::fabs(speed) * length); }
@@ -143,6 +147,49 @@ void holdEdgeCurvature(btDispatcher& dispatcher, double length, bool meanVelocit
         const double mean = 2.0 * gap - closingSpeed(manifold, point) * length;
         saved.emplace_back(&point, point.getDistance());
         point.setDistance(meanVelocity && mean > gap ? mean : gap);
+      }
+    }
+  }
+}
+
+void holdEdgeLevers(btDispatcher& dispatcher, double length, std::vector<HeldPlace>& saved) {
+  constexpr double kOnSide = 1e-7;  // m: a clipped point lies on the edge to rounding
+  for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
+    btPersistentManifold& manifold = *dispatcher.getManifoldByIndexInternal(m);
+    for (int p = 0; p < manifold.getNumContacts(); ++p) {
+      btManifoldPoint& point = manifold.getContactPoint(p);
+      if (point.getDistance() > kOnBox) continue;
+      for (const bool carriedIsA : {true, false}) {
+        const btCollisionObject* object = carriedIsA ? manifold.getBody0() : manifold.getBody1();
+        const btRigidBody* body = movingBody(object);
+        if (!body || body->getGravity().length2() == 0) continue;
+        const btCollisionObject& support = *(carriedIsA ? manifold.getBody1() : manifold.getBody0());
+        const btVector3& onBody = carriedIsA ? point.getPositionWorldOnA() : point.getPositionWorldOnB();
+        const auto box = boxAt(support, carriedIsA ? point.getPositionWorldOnB() : point.getPositionWorldOnA());
+        const auto own = boxAt(*object, onBody);
+        if (!box || !own) continue;
+        const btVector3 normal = carriedIsA ? point.m_normalWorldOnB : -point.m_normalWorldOnB;
+        if (normal.dot(-body->getGravity().normalized()) < 0.7) continue;
+        const btVector3 local = box->place.getBasis().transpose() * normal;
+        const int face = local.closestAxis();
+        if (std::fabs(local[face]) < 0.999) continue;
+        // A corner of the body's own box moves with it: only a point inside
+        // its face, cut out by the support's edge, stays on that edge.
+        const btVector3 mine = own->place.invXform(onBody);
+        int corner = 0;
+        for (int i = 0; i < 3; ++i) corner += std::fabs(mine[i]) >= own->half[i] - kOnSide ? 1 : 0;
+        if (corner == 3) continue;
+        const btVector3 there = box->place.invXform(carriedIsA ? point.getPositionWorldOnB() : point.getPositionWorldOnA());
+        const btVector3 v = relativeVelocity(*body, support, *box);
+        btVector3 across(0, 0, 0);
+        for (int i = 0; i < 3; ++i) {
+          if (i != face && std::fabs(there[i]) >= box->half[i] - kOnSide) across[i] = v[i];
+        }
+        const double least = std::min({own->half.x(), own->half.y(), own->half.z()});
+        if (across.length2() == 0 || across.length() * length > kLeverTravel * least) continue;
+        const btVector3 back = box->place.getBasis() * across * (-0.5 * length);
+        saved.push_back({&point, point.m_positionWorldOnA, point.m_positionWorldOnB});
+        (carriedIsA ? point.m_positionWorldOnA : point.m_positionWorldOnB) += back;
       }
     }
   }

@@ -37,4 +37,20 @@ double earliestFaceExit(btDispatcher& dispatcher, double horizon);
 void holdEdgeCurvature(btDispatcher& dispatcher, double length, bool meanVelocity,
                        std::vector<std::pair<btManifoldPoint*, btScalar>>& saved);
 
+/// Readies for a part `length` s long the points where a box's face is cut
+/// by the edge of the box face under it (a cube overhanging the table top
+/// or the cube under it). Such a point stays on that edge while the body
+/// moves across it, so its lever about the body's centre changes within
+/// the part; the solver takes it from the part's start, where a cube whose
+/// centre has just reached the edge is held level for the whole part, and
+/// its tip lagged by half a part (0.49 mm at 60 Hz). Each such point, on
+/// the carried body's side, is moved back by half the part's motion across
+/// the edge: to where it is, relative to the body, at mid-part. `saved`
+/// gets the points and their places, to be put back after the solve.
+struct HeldPlace {
+  btManifoldPoint* point;
+  btVector3 onA, onB;  // its world places before
+};
+void holdEdgeLevers(btDispatcher& dispatcher, double length, std::vector<HeldPlace>& saved);
+
 }  // namespace tabletop

@@ -5,6 +5,12 @@
 #include <utility>
 #include <vector>
 
+#include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
+#include <BulletCollision/NarrowPhaseCollision/btGjkPairDetector.h>
+#include <BulletCollision/NarrowPhaseCollision/btPointCollector.h>
+#include <BulletCollision/NarrowPhaseCollision/btPolyhedralContactClipping.h>
+#include <BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h>
+
 #include "physics/ContactResult.h"
 
 namespace tabletop {
@@ -54,6 +60,37 @@ void FaceVertices::processCollision(const btCollisionObjectWrapper* body0, const
     otherwise_ = otherwiseFunc_.CreateCollisionAlgorithm(construction, body0, body1);
   }
   otherwise_->processCollision(body0, body1, info, result);
+  if (box0 && box1) clipApart(body0, body1, result);
+}
+
+void FaceVertices::clipApart(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
+                             btManifoldResult* result) {
+  btManifoldArray manifolds;
+  otherwise_->getAllContactManifolds(manifolds);
+  if (manifolds.size() != 1) return;
+  // Only points found in this step count (the solve drops the others).
+  dropDriftedPoints(*manifolds[0]);
+  if (manifolds[0]->getNumContacts() > 0) return;
+  const auto* a = static_cast<const btBoxShape*>(body0->getCollisionShape());
+  const auto* b = static_cast<const btBoxShape*>(body1->getCollisionShape());
+  if (!a->getConvexPolyhedron() || !b->getConvexPolyhedron()) return;
+  btVoronoiSimplexSolver simplex;
+  btGjkEpaPenetrationDepthSolver depth;
+  btGjkPairDetector gjk(a, b, &simplex, &depth);
+  btDiscreteCollisionDetectorInterface::ClosestPointInput input;
+  input.m_transformA = body0->getWorldTransform();
+  input.m_transformB = body1->getWorldTransform();
+  btPointCollector closest;
+  gjk.getClosestPoints(input, closest, nullptr);
+  const btScalar reach = manifolds[0]->getContactBreakingThreshold();
+  if (!closest.m_hasResult || !(closest.m_distance > 0) || closest.m_distance > reach) return;
+  // This result's body 1 is B: its normal points from body 1 to body 0.
+  result->setPersistentManifold(manifolds[0]);
+  btVertexArray clipped, scratch;
+  btPolyhedralContactClipping::clipHullAgainstHull(closest.m_normalOnBInWorld, *a->getConvexPolyhedron(),
+                                                   *b->getConvexPolyhedron(), input.m_transformA,
+                                                   input.m_transformB, -reach, reach, clipped, scratch, *result);
+  result->refreshContactPoints();
 }
 
 bool FaceVertices::touchFace(const btCollisionObjectWrapper* boxWrap, const btCollisionObjectWrapper* solidWrap,
