@@ -308,7 +308,7 @@ void DynamicsWorld::solveConstraints(btContactSolverInfo& solverInfo) {
   }
   const std::vector<std::pair<const btPersistentManifold*, const btManifoldPoint*>> slipping = slippingPoints();
   if (secondOrder_) scan.holdMeanVelocity(partLength_, heldGaps_);
-  holdEdgeCurvature(*dispatcher, partLength_, secondOrder_, heldGaps_);
+  holdEdgeCurvature(*dispatcher, partLength_, stepLength_, secondOrder_, heldGaps_);
   holdEdgeLevers(*dispatcher, partLength_, heldPlaces_);
   btDiscreteDynamicsWorld::solveConstraints(solverInfo);
   solved_ = true;

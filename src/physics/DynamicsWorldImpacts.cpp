@@ -72,16 +72,13 @@ void blendWithinEnergy(btAlignedObjectArray<btRigidBody*>& bodies,
 // point gets restitution in its solve.
 void DynamicsWorld::resolveTouchingImpacts(btContactSolverInfo& solverInfo) {
   btDispatcher* dispatcher = getDispatcher();
-  const double impactSpeed = kBounceSpeed;
   bool any = false;
   for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
     btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
     const double restitution = restitutionOf(*manifold);
     for (int p = 0; p < manifold->getNumContacts(); ++p) {
       btManifoldPoint& point = manifold->getContactPoint(p);
-      const double speed = closingSpeed(*manifold, point);
-      const bool bounces = smoothAcceleration_ > 0 && restitution > 0 && speed > impactSpeed &&
-                           point.getDistance() <= std::max(kTouching, speed * std::min(kSameInstant, 0.01 * stepLength_));
+      const bool bounces = smoothAcceleration_ > 0 && restitution > 0 && strikesNow(*manifold, point, stepLength_);
       point.m_combinedRestitution = bounces ? restitution : 0.0;
       any |= bounces;
     }
@@ -140,10 +137,19 @@ void DynamicsWorld::resolveTouchingImpacts(btContactSolverInfo& solverInfo) {
     if (islands != nullptr) islands->setSweepsOnly(false);
   };
   const double energyBefore = kineticEnergy(m_nonStaticRigidBodies);
+  // A bouncing point may still be a few micrometres apart: it bounces as
+  // at touch (strikesNow), its gap put back after.
+  std::vector<std::pair<btManifoldPoint*, btScalar>> gaps;
   for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
     btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
     for (int p = 0; p < manifold->getNumContacts(); ++p) {
-      if (manifold->getContactPoint(p).m_combinedRestitution > 0) bounced_.push_back(&manifold->getContactPoint(p));
+      btManifoldPoint& point = manifold->getContactPoint(p);
+      if (!(point.m_combinedRestitution > 0)) continue;
+      bounced_.push_back(&point);
+      if (point.getDistance() > 0) {
+        gaps.emplace_back(&point, point.getDistance());
+        point.setDistance(0);
+      }
     }
   }
   solve();
@@ -165,6 +171,7 @@ void DynamicsWorld::resolveTouchingImpacts(btContactSolverInfo& solverInfo) {
     solve();
     blendWithinEnergy(m_nonStaticRigidBodies, elastic, energyBefore);
   }
+  for (const auto& [point, gap] : gaps) point->setDistance(gap);
 
   for (const Saved& s : saved) {
     s.body->applyCentralForce(s.force);

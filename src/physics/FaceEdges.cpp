@@ -105,49 +105,81 @@ double earliestFaceExit(btDispatcher& dispatcher, double horizon) {
   return earliest;
 }
 
-void holdEdgeCurvature(btDispatcher& dispatcher, double length, bool meanVelocity,
+namespace {
+
+// How a ball moves about what it touches at `point` in a part `length` s
+// long, where its distance from it bends: the centre's place relative to
+// the feature it moves about (an edge or corner of a box, or the other
+// ball's centre) and its velocity relative to it, less any part along an
+// edge; none over a box's face.
+std::optional<std::pair<btVector3, btVector3>> curvedPath(const btPersistentManifold& manifold,
+                                                       const btManifoldPoint& point, double length) {
+  const btRigidBody* a = movingBody(manifold.getBody0());
+  const btRigidBody* b = movingBody(manifold.getBody1());
+  const auto isBall = [](const btCollisionObject* o) {
+    return o->getCollisionShape()->getShapeType() == SPHERE_SHAPE_PROXYTYPE;
+  };
+  if (isBall(manifold.getBody0()) && isBall(manifold.getBody1())) {
+    if (!a && !b) return std::nullopt;
+    const btVector3 r = manifold.getBody0()->getWorldTransform().getOrigin() -
+                        manifold.getBody1()->getWorldTransform().getOrigin();
+    const btVector3 v = (a ? a->getLinearVelocity() : btVector3(0, 0, 0)) - (b ? b->getLinearVelocity() : btVector3(0, 0, 0));
+    return std::make_pair(r, v);
+  }
+  for (const bool ballIsA : {true, false}) {
+    const btRigidBody* ball = ballIsA ? a : b;
+    if (!ball || !isBall(ball)) continue;
+    const btCollisionObject& support = *(ballIsA ? manifold.getBody1() : manifold.getBody0());
+    const auto box = boxAt(support, ballIsA ? point.getPositionWorldOnB() : point.getPositionWorldOnA());
+    if (!box) continue;
+    // The box's nearest point to the centre, sharp (its outer extents);
+    // an axis the centre is past (or on the edge of) is pinned there.
+    const btVector3 centre = box->place.invXform(ball->getCenterOfMassPosition());
+    btVector3 v = relativeVelocity(*ball, support, *box);
+    btVector3 nearest = centre;
+    int pinned = 0;
+    bool along[3] = {true, true, true};
+    for (int i = 0; i < 3; ++i) {
+      if (std::fabs(centre[i]) < box->half[i] - edgeBand(v[i], length)) continue;
+      nearest[i] = std::copysign(box->half[i], centre[i]);
+      along[i] = false;
+      ++pinned;
+    }
+    if (pinned < 2) continue;  // over a face: the distance is linear in the motion
+    for (int i = 0; i < 3; ++i) {
+      if (along[i]) v[i] = 0;  // along an edge the distance does not change
+    }
+    return std::make_pair(centre - nearest, v);
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+void holdEdgeCurvature(btDispatcher& dispatcher, double length, double stepLength, bool meanVelocity,
                        std::vector<std::pair<btManifoldPoint*, btScalar>>& saved) {
   for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
     btPersistentManifold& manifold = *dispatcher.getManifoldByIndexInternal(m);
     for (int p = 0; p < manifold.getNumContacts(); ++p) {
       btManifoldPoint& point = manifold.getContactPoint(p);
-      for (const bool ballIsA : {true, false}) {
-        const btRigidBody* ball = movingBody(ballIsA ? manifold.getBody0() : manifold.getBody1());
-        if (!ball || ball->getCollisionShape()->getShapeType() != SPHERE_SHAPE_PROXYTYPE) continue;
-        const btCollisionObject& support = *(ballIsA ? manifold.getBody1() : manifold.getBody0());
-        const auto box = boxAt(support, ballIsA ? point.getPositionWorldOnB() : point.getPositionWorldOnA());
-        if (!box) continue;
-        // The box's nearest point to the centre, sharp (its outer extents);
-        // an axis the centre is past (or on the edge of) is pinned there.
-        const btVector3 centre = box->place.invXform(ball->getCenterOfMassPosition());
-        btVector3 v = relativeVelocity(*ball, support, *box);
-        btVector3 nearest = centre;
-        int pinned = 0;
-        bool along[3] = {true, true, true};
-        for (int i = 0; i < 3; ++i) {
-          if (std::fabs(centre[i]) < box->half[i] - edgeBand(v[i], length)) continue;
-          nearest[i] = std::copysign(box->half[i], centre[i]);
-          along[i] = false;
-          ++pinned;
-        }
-        if (pinned < 2) continue;  // over a face: the distance is linear in the motion
-        const btVector3 out = centre - nearest;
-        const double reach = out.length();
-        if (!(reach > 0)) continue;
-        const btVector3 n = out / reach;
-        for (int i = 0; i < 3; ++i) {
-          if (along[i]) v[i] = 0;  // along an edge the distance does not change
-        }
-        const btVector3 across = v - n * v.dot(n);
-        const double growth = across.length2() * length * length / (2.0 * reach);
-        if (!(growth > 0)) continue;
-        // The gap the row sees: the end gap with the growth; with positions
-        // that follow the mean velocity, as ImpactScan::holdMeanVelocity.
-        const double gap = point.getDistance() + growth;
-        const double mean = 2.0 * gap - closingSpeed(manifold, point) * length;
-        saved.emplace_back(&point, point.getDistance());
-        point.setDistance(meanVelocity && mean > gap ? mean : gap);
-      }
+      // A point striking now is an impact, which stops the closing at once.
+      if (strikesNow(manifold, point, stepLength)) continue;
+      const auto path = curvedPath(manifold, point, length);
+      if (!path) continue;
+      // How much farther apart the straight-line motion leaves them than
+      // the row's first-order change: |r + v t| - |r| - (r / |r|).v t,
+      // about v^2 t^2 / (2 |r|) for v across r.
+      const auto& [r, v] = *path;
+      const double reach = r.length();
+      if (!(reach > 0)) continue;
+      const double growth = (r + v * length).length() - reach - r.dot(v) / reach * length;
+      if (!(growth > 0)) continue;
+      // The gap the row sees: the end gap with the growth; with positions
+      // that follow the mean velocity, as ImpactScan::holdMeanVelocity.
+      const double gap = point.getDistance() + growth;
+      const double mean = 2.0 * gap - closingSpeed(manifold, point) * length;
+      saved.emplace_back(&point, point.getDistance());
+      point.setDistance(meanVelocity && mean > gap ? mean : gap);
     }
   }
 }

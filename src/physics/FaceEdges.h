@@ -26,15 +26,20 @@ namespace tabletop {
 double earliestFaceExit(btDispatcher& dispatcher, double horizon);
 
 /// Readies the rows of balls at a box's edge or corner (the centre past
-/// the face) for a part `length` s long. Bullet's row is the distance's
-/// first-order change; about an edge the distance also grows with the
-/// square of the ball's speed across it, v^2 t^2 / (2 R), R the centre's
-/// distance from the edge. Without it a ball leaving the edge faster than
-/// sqrt(g R) was held up for a part. Each such point's gap is raised by
-/// that growth over the part (and, with `meanVelocity`, for positions that
-/// follow the mean of the part's velocities); `saved` gets the points and
-/// their gaps, to be put back after the solve.
-void holdEdgeCurvature(btDispatcher& dispatcher, double length, bool meanVelocity,
+/// the face), and of two balls, for a part `length` s long of a step
+/// `stepLength` s long. Bullet's row is the distance's first-order change;
+/// about an edge, or another ball, the distance also grows with the square
+/// of the ball's speed across the line to it, v^2 t^2 / (2 R), R the
+/// centre's distance from the edge (or the other centre). Without it a
+/// ball leaving the edge faster than sqrt(g R) was held up for a part, and
+/// two balls meeting obliquely were slowed before they touched and pressed
+/// together after an inelastic impact (5e-4 m/s at 55 degrees). Each such
+/// point's gap is raised by that growth over the part (and, with
+/// `meanVelocity`, for positions that follow the mean of the part's
+/// velocities), but for a point striking now (strikesNow), which the
+/// impact stops; `saved` gets the points and their gaps, to be put back
+/// after the solve.
+void holdEdgeCurvature(btDispatcher& dispatcher, double length, double stepLength, bool meanVelocity,
                        std::vector<std::pair<btManifoldPoint*, btScalar>>& saved);
 
 /// Readies for a part `length` s long the points where a box's face is cut
