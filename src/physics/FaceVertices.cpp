@@ -5,13 +5,10 @@
 #include <utility>
 #include <vector>
 
-#include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
-#include <BulletCollision/NarrowPhaseCollision/btGjkPairDetector.h>
-#include <BulletCollision/NarrowPhaseCollision/btPointCollector.h>
 #include <BulletCollision/NarrowPhaseCollision/btPolyhedralContactClipping.h>
-#include <BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h>
 
 #include "physics/ContactResult.h"
+#include "physics/Impacts.h"
 
 namespace tabletop {
 
@@ -74,22 +71,15 @@ void FaceVertices::clipApart(const btCollisionObjectWrapper* body0, const btColl
   const auto* a = static_cast<const btBoxShape*>(body0->getCollisionShape());
   const auto* b = static_cast<const btBoxShape*>(body1->getCollisionShape());
   if (!a->getConvexPolyhedron() || !b->getConvexPolyhedron()) return;
-  btVoronoiSimplexSolver simplex;
-  btGjkEpaPenetrationDepthSolver depth;
-  btGjkPairDetector gjk(a, b, &simplex, &depth);
-  btDiscreteCollisionDetectorInterface::ClosestPointInput input;
-  input.m_transformA = body0->getWorldTransform();
-  input.m_transformB = body1->getWorldTransform();
-  btPointCollector closest;
-  gjk.getClosestPoints(input, closest, nullptr);
+  const btPointCollector closest = closestPoints(*a, body0->getWorldTransform(), *b, body1->getWorldTransform());
   const btScalar reach = manifolds[0]->getContactBreakingThreshold();
   if (!closest.m_hasResult || !(closest.m_distance > 0) || closest.m_distance > reach) return;
   // This result's body 1 is B: its normal points from body 1 to body 0.
   result->setPersistentManifold(manifolds[0]);
   btVertexArray clipped, scratch;
   btPolyhedralContactClipping::clipHullAgainstHull(closest.m_normalOnBInWorld, *a->getConvexPolyhedron(),
-                                                   *b->getConvexPolyhedron(), input.m_transformA,
-                                                   input.m_transformB, -reach, reach, clipped, scratch, *result);
+                                                   *b->getConvexPolyhedron(), body0->getWorldTransform(),
+                                                   body1->getWorldTransform(), -reach, reach, clipped, scratch, *result);
   result->refreshContactPoints();
 }
 

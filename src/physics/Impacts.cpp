@@ -74,6 +74,19 @@ bool strikesNow(const btPersistentManifold& manifold, const btManifoldPoint& poi
          point.getDistance() <= std::max(kTouching, speed * std::min(kSameInstant, 0.01 * stepLength));
 }
 
+btPointCollector closestPoints(const btConvexShape& a, const btTransform& placeA, const btConvexShape& b,
+                               const btTransform& placeB) {
+  btVoronoiSimplexSolver simplex;
+  btGjkEpaPenetrationDepthSolver depth;
+  btGjkPairDetector gjk(&a, &b, &simplex, &depth);
+  btDiscreteCollisionDetectorInterface::ClosestPointInput input;
+  input.m_transformA = placeA;
+  input.m_transformB = placeB;
+  btPointCollector closest;
+  gjk.getClosestPoints(input, closest, nullptr);
+  return closest;
+}
+
 double timeToClose(double gap, double speed, double accel) {
   constexpr double kNever = std::numeric_limits<double>::infinity();
   if (gap <= 0) return 0.0;
@@ -186,14 +199,7 @@ double ImpactScan::earliestSeparatedImpact(btOverlappingPairCache& pairs, double
     if (found) continue;  // earliestImpact has its points
     for (const auto& [shapeA, placeA] : convexPieces(a)) {
       for (const auto& [shapeB, placeB] : convexPieces(b)) {
-        btVoronoiSimplexSolver simplex;
-        btGjkEpaPenetrationDepthSolver depth;
-        btGjkPairDetector gjk(shapeA, shapeB, &simplex, &depth);
-        btDiscreteCollisionDetectorInterface::ClosestPointInput input;
-        input.m_transformA = placeA;
-        input.m_transformB = placeB;
-        btPointCollector closest;
-        gjk.getClosestPoints(input, closest, nullptr);
+        const btPointCollector closest = closestPoints(*shapeA, placeA, *shapeB, placeB);
         if (!closest.m_hasResult || closest.m_distance <= kTouching) continue;
         // A point of manifold form: the normal on B, from B towards A.
         const btVector3 onB = closest.m_pointInWorld;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include <btBulletDynamicsCommon.h>
+#include <BulletCollision/NarrowPhaseCollision/btPointCollector.h>
 
 namespace tabletop {
 
@@ -50,6 +51,11 @@ double slipSpeed(const btPersistentManifold& manifold, const btManifoldPoint& po
 /// a ball of 0.4 kg striking one of 2.5 kg came away 1.4% slow at e = 1,
 /// and 0.1% at e = 0).
 bool strikesNow(const btPersistentManifold& manifold, const btManifoldPoint& point, double stepLength);
+
+/// GJK's closest points of two convex shapes placed in the world (the
+/// normal on B, from B towards A; a negative distance where they overlap).
+btPointCollector closestPoints(const btConvexShape& a, const btTransform& placeA, const btConvexShape& b,
+                               const btTransform& placeB);
 
 /// The first time, s, at which a gap of `gap` m closes from the closing
 /// speed `speed` and acceleration `accel` (constant), or infinity.
