@@ -15,6 +15,10 @@ namespace {
 constexpr int kTableIndex = -2;
 constexpr int kGroundIndex = -3;
 
+// The gravity, m/s^2, below which a scene's smooth accelerations are
+// taken as at this one (updateSmoothAcceleration).
+constexpr double kLeastGravity = 0.01;
+
 // How far an entity may move in one part of a step, as a share of its
 // smallest half extent (World::substeps).
 constexpr double kSubstepTravel = 0.5;
@@ -165,14 +169,17 @@ void World::makeDynamic(std::size_t i, const btVector3& velocity) {
 // The largest acceleration gravity and sliding friction can give a body:
 // g (1 + mu) with mu the largest friction any two of the scene's bodies
 // combine to, and a margin of half as much again for the solver's
-// rounding. A velocity change beyond it in one step is an impact.
+// rounding. A velocity change beyond it in one step is an impact. Without
+// gravity nothing is smooth, but the threshold must not be 0, which turns
+// the impact handling off (every impact of a weightless scene was
+// inelastic): it is taken as at kLeastGravity.
 // entityFriction_ is the largest of the entities', kept as they are added
 // so that adding N entities costs O(N), not O(N^2).
 void World::updateSmoothAcceleration() {
   const double otherFriction =
       std::max({entityFriction_, table_.spec().material.friction, ground_.material().friction});
   const double mu = combine(Material{entityFriction_}, Material{otherFriction}).friction;
-  world_->setSmoothAcceleration(1.5 * settings_.gravity * (1.0 + mu));
+  world_->setSmoothAcceleration(1.5 * std::max(settings_.gravity, kLeastGravity) * (1.0 + mu));
 }
 
 Shape* World::find(std::string_view name) {
