@@ -124,12 +124,13 @@ bool ImpactScan::held(const btCollisionObject* object) const {
 
 double ImpactScan::accelerationTowards(const btCollisionObject& a, const btCollisionObject& b,
                                        const btVector3& normalOnB) const {
-  const auto accelerationOf = [&](const btCollisionObject& o) {
-    const btRigidBody* body = btRigidBody::upcast(&o);
-    if (!body || body->getInvMass() == 0 || held(&o)) return btVector3(0, 0, 0);
-    return body->getTotalForce() * body->getInvMass();
-  };
   return -(accelerationOf(a) - accelerationOf(b)).dot(normalOnB);
+}
+
+btVector3 ImpactScan::accelerationOf(const btCollisionObject& object) const {
+  const btRigidBody* body = btRigidBody::upcast(&object);
+  if (!body || body->getInvMass() == 0 || held(&object)) return btVector3(0, 0, 0);
+  return body->getTotalForce() * body->getInvMass();
 }
 
 double ImpactScan::closingAcceleration(const btPersistentManifold& manifold, const btManifoldPoint& point) const {
@@ -172,13 +173,27 @@ std::vector<std::pair<const btConvexShape*, btTransform>> convexPieces(const btC
   return pieces;
 }
 
-// The fastest any point of `object` within `reach` of its centre moves, m/s.
+// The fastest any point of `object` moves, m/s: its centre's speed and its
+// spin times the farthest its shape reaches from the centre (a corner of
+// the shape's own box, which need not be centred on it).
 double fastestPoint(const btCollisionObject& object) {
   const btRigidBody* body = btRigidBody::upcast(&object);
   if (!body || body->isStaticOrKinematicObject()) return 0.0;
   btVector3 low, high;
   object.getCollisionShape()->getAabb(btTransform::getIdentity(), low, high);
-  return body->getLinearVelocity().length() + body->getAngularVelocity().length() * 0.5 * (high - low).length();
+  const btVector3 reach(std::max(-low.x(), high.x()), std::max(-low.y(), high.y()), std::max(-low.z(), high.z()));
+  return body->getLinearVelocity().length() + body->getAngularVelocity().length() * reach.length();
+}
+
+// How far apart, m, the world boxes of two pieces are at least (0 when
+// they overlap): no closer than their shapes.
+double boxGap(const btConvexShape& a, const btTransform& placeA, const btConvexShape& b, const btTransform& placeB) {
+  btVector3 lowA, highA, lowB, highB;
+  a.getAabb(placeA, lowA, highA);
+  b.getAabb(placeB, lowB, highB);
+  btVector3 apart(0, 0, 0);
+  for (int i = 0; i < 3; ++i) apart[i] = std::max({0.0, lowB[i] - highA[i], lowA[i] - highB[i]});
+  return apart.length();
 }
 
 }  // namespace
@@ -191,14 +206,20 @@ double ImpactScan::earliestSeparatedImpact(btOverlappingPairCache& pairs, double
     const btBroadphasePair& pair = array[i];
     const auto& a = *static_cast<const btCollisionObject*>(pair.m_pProxy0->m_clientObject);
     const auto& b = *static_cast<const btCollisionObject*>(pair.m_pProxy1->m_clientObject);
-    if (fastestPoint(a) + fastestPoint(b) <= impactSpeed) continue;
+    const double fastest = fastestPoint(a) + fastestPoint(b);
+    if (fastest <= impactSpeed) continue;
     manifolds.resize(0);
     if (pair.m_algorithm) pair.m_algorithm->getAllContactManifolds(manifolds);
     bool found = false;
     for (int m = 0; m < manifolds.size(); ++m) found |= manifolds[m]->getNumContacts() > 0;
     if (found) continue;  // earliestImpact has its points
+    // The farthest the pair can close within the horizon: pieces whose
+    // boxes are farther apart cannot meet in it, and GJK is spared.
+    const double fastestAccel = accelerationOf(a).length() + accelerationOf(b).length();
+    const double reach = (fastest + 0.5 * fastestAccel * horizon) * horizon + kTouching;
     for (const auto& [shapeA, placeA] : convexPieces(a)) {
       for (const auto& [shapeB, placeB] : convexPieces(b)) {
+        if (boxGap(*shapeA, placeA, *shapeB, placeB) > reach) continue;
         const btPointCollector closest = closestPoints(*shapeA, placeA, *shapeB, placeB);
         if (!closest.m_hasResult || closest.m_distance <= kTouching) continue;
         // A point of manifold form: the normal on B, from B towards A.

@@ -108,6 +108,9 @@ class ImpactScan {
  private:
   bool held(const btCollisionObject* object) const;
   double accelerationTowards(const btCollisionObject& a, const btCollisionObject& b, const btVector3& normalOnB) const;
+  // A body's acceleration from its forces, m/s^2 (none if something
+  // touches it).
+  btVector3 accelerationOf(const btCollisionObject& object) const;
 
   btDispatcher& dispatcher_;
   const std::vector<btManifoldPoint*>& bounced_;
