@@ -1,6 +1,7 @@
 #include "physics/ContactDispatcher.h"
 
 #include "physics/ContactResult.h"
+#include "physics/ShapeKinds.h"
 
 
 namespace tabletop {
@@ -64,8 +65,7 @@ void ContactDispatcher::nearCallback(btBroadphasePair& pair, btCollisionDispatch
   // unless asked for points this far apart. Every other pair is found up
   // to the breaking threshold ahead of touching, and an impact between
   // spheres is placed at its own time like any other (DynamicsWorld).
-  if (object0->getCollisionShape()->getShapeType() == SPHERE_SHAPE_PROXYTYPE &&
-      object1->getCollisionShape()->getShapeType() == SPHERE_SHAPE_PROXYTYPE) {
+  if (isBall(*object0) && isBall(*object1)) {
     result.m_closestPointDistanceThreshold = gContactBreakingThreshold;
   }
   if (info.m_dispatchFunc == btDispatcherInfo::DISPATCH_DISCRETE) {

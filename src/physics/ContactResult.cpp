@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <functional>
 
+#include "physics/ShapeKinds.h"
+
 namespace tabletop {
 namespace {
 
@@ -58,10 +60,8 @@ constexpr double kStaleDrift = 1e-6;
 // is a ball and a box with the centre outside the box.
 bool ballOnSharpBox(const btCollisionObjectWrapper& a, const btCollisionObjectWrapper& b, btVector3& normalOnB,
                     btVector3& pointOnB, btScalar& depth) {
-  const bool ballIsA = a.getCollisionShape()->getShapeType() == SPHERE_SHAPE_PROXYTYPE &&
-                       b.getCollisionShape()->getShapeType() == BOX_SHAPE_PROXYTYPE;
-  const bool ballIsB = b.getCollisionShape()->getShapeType() == SPHERE_SHAPE_PROXYTYPE &&
-                       a.getCollisionShape()->getShapeType() == BOX_SHAPE_PROXYTYPE;
+  const bool ballIsA = isBall(*a.getCollisionShape()) && isBox(*b.getCollisionShape());
+  const bool ballIsB = isBall(*b.getCollisionShape()) && isBox(*a.getCollisionShape());
   if (!ballIsA && !ballIsB) return false;
   const btCollisionObjectWrapper& ball = ballIsA ? a : b;
   const btCollisionObjectWrapper& box = ballIsA ? b : a;

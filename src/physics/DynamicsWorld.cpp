@@ -9,13 +9,10 @@
 #include "physics/ContactResult.h"
 #include "physics/FaceEdges.h"
 #include "physics/Impacts.h"
+#include "physics/ShapeKinds.h"
 
 namespace tabletop {
 namespace {
-
-bool isSphere(const btCollisionObject* object) {
-  return object->getCollisionShape()->getShapeType() == SPHERE_SHAPE_PROXYTYPE;
-}
 
 // A box against a box or against the table, and a box or a hull against
 // the floor: the pairs whose touching points are all found afresh every
@@ -256,7 +253,7 @@ void DynamicsWorld::solveConstraints(btContactSolverInfo& solverInfo) {
   for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
     btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
     if (manifold->getNumContacts() > 1 &&
-        (isSphere(manifold->getBody0()) || isSphere(manifold->getBody1()))) {
+        (isBall(*manifold->getBody0()) || isBall(*manifold->getBody1()))) {
       keepDeepestPoint(*manifold);
     } else if (isClippedBoxPair(*manifold)) {
       dropDriftedPoints(*manifold);

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "physics/Impacts.h"
+#include "physics/ShapeKinds.h"
 
 namespace tabletop {
 namespace {
@@ -37,7 +38,7 @@ struct BoxPiece {
 // The box of `object` (itself, or a compound's child) that `point` lies on.
 std::optional<BoxPiece> boxAt(const btCollisionObject& object, const btVector3& point) {
   const auto onIt = [&](const btCollisionShape* shape, const btTransform& place) -> std::optional<BoxPiece> {
-    if (shape->getShapeType() != BOX_SHAPE_PROXYTYPE) return std::nullopt;
+    if (!isBox(*shape)) return std::nullopt;
     const btVector3 half = static_cast<const btBoxShape*>(shape)->getHalfExtentsWithMargin();
     const btVector3 local = place.invXform(point);
     for (int i = 0; i < 3; ++i) {
@@ -116,10 +117,7 @@ std::optional<std::pair<btVector3, btVector3>> curvedPath(const btPersistentMani
                                                        const btManifoldPoint& point, double length) {
   const btRigidBody* a = movingBody(manifold.getBody0());
   const btRigidBody* b = movingBody(manifold.getBody1());
-  const auto isBall = [](const btCollisionObject* o) {
-    return o->getCollisionShape()->getShapeType() == SPHERE_SHAPE_PROXYTYPE;
-  };
-  if (isBall(manifold.getBody0()) && isBall(manifold.getBody1())) {
+  if (isBall(*manifold.getBody0()) && isBall(*manifold.getBody1())) {
     if (!a && !b) return std::nullopt;
     const btVector3 r = manifold.getBody0()->getWorldTransform().getOrigin() -
                         manifold.getBody1()->getWorldTransform().getOrigin();
@@ -128,7 +126,7 @@ std::optional<std::pair<btVector3, btVector3>> curvedPath(const btPersistentMani
   }
   for (const bool ballIsA : {true, false}) {
     const btRigidBody* ball = ballIsA ? a : b;
-    if (!ball || !isBall(ball)) continue;
+    if (!ball || !isBall(*ball)) continue;
     const btCollisionObject& support = *(ballIsA ? manifold.getBody1() : manifold.getBody0());
     const auto box = boxAt(support, ballIsA ? point.getPositionWorldOnB() : point.getPositionWorldOnA());
     if (!box) continue;

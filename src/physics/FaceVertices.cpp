@@ -9,6 +9,7 @@
 
 #include "physics/ContactResult.h"
 #include "physics/Impacts.h"
+#include "physics/ShapeKinds.h"
 
 namespace tabletop {
 
@@ -42,8 +43,8 @@ void FaceVertices::processCollision(const btCollisionObjectWrapper* body0, const
                                     const btDispatcherInfo& info, btManifoldResult* result) {
   // Two boxes: the first whose face the other rests on, the first body's
   // tried first, so the roles stay put from step to step.
-  const bool box0 = body0->getCollisionShape()->getShapeType() == BOX_SHAPE_PROXYTYPE;
-  const bool box1 = body1->getCollisionShape()->getShapeType() == BOX_SHAPE_PROXYTYPE;
+  const bool box0 = isBox(*body0->getCollisionShape());
+  const bool box1 = isBox(*body1->getCollisionShape());
   if ((box0 && touchFace(body0, body1, true, result)) || (box1 && touchFace(body1, body0, false, result))) {
     clearOtherwise();
     return;

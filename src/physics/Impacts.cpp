@@ -13,6 +13,7 @@
 
 #include "core/Material.h"
 #include "physics/ContactMaterial.h"
+#include "physics/ShapeKinds.h"
 
 namespace tabletop {
 namespace {
@@ -34,10 +35,7 @@ btVector3 velocityAt(const btCollisionObject* object, const btVector3& point) {
 std::optional<double> ballsMeet(const btPersistentManifold& manifold) {
   const btCollisionObject* a = manifold.getBody0();
   const btCollisionObject* b = manifold.getBody1();
-  if (a->getCollisionShape()->getShapeType() != SPHERE_SHAPE_PROXYTYPE ||
-      b->getCollisionShape()->getShapeType() != SPHERE_SHAPE_PROXYTYPE) {
-    return std::nullopt;
-  }
+  if (!isBall(*a) || !isBall(*b)) return std::nullopt;
   const double reach = static_cast<const btSphereShape*>(a->getCollisionShape())->getRadius() +
                        static_cast<const btSphereShape*>(b->getCollisionShape())->getRadius();
   const btVector3 r = a->getWorldTransform().getOrigin() - b->getWorldTransform().getOrigin();
