@@ -8,6 +8,7 @@
 #include <BulletDynamics/Dynamics/btRigidBody.h>
 
 #include "physics/Impacts.h"
+#include "physics/ShapeKinds.h"
 
 namespace tabletop {
 namespace {
@@ -23,6 +24,15 @@ constexpr double kSlideSpeed = 1e-3;
 bool isDynamic(const btCollisionObject* object) {
   const btRigidBody* body = btRigidBody::upcast(object);
   return body != nullptr && body->getInvMass() > 0;
+}
+
+// Whether a point's rows are independent of each other: each body at it is
+// a ball (whose normal passes through its centre, and whose inertia is the
+// same about every axis) or does not move. One sweep then solves them
+// exactly, and pivoting buys nothing.
+bool uncoupled(const btPersistentManifold& manifold) {
+  const auto plain = [](const btCollisionObject* o) { return isBall(*o) || !isDynamic(o); };
+  return plain(manifold.getBody0()) && plain(manifold.getBody1());
 }
 
 }  // namespace
@@ -53,7 +63,7 @@ IslandSolver::Way IslandSolver::chooseWay(btPersistentManifold** manifolds, int 
         return fits ? Way::Pivot : Way::LongSweeps;
       }
       sunk = sunk || point.getDistance() < -kLoadTouching;
-      slides = slides || slipSpeed(*manifold, point) > kSlideSpeed;
+      slides = slides || (!uncoupled(*manifold) && slipSpeed(*manifold, point) > kSlideSpeed);
     }
   }
   // A slide with a point sunk in (a landing) is left to the sweeps' split
