@@ -10,6 +10,7 @@
 #include "physics/FaceEdges.h"
 #include "physics/Impacts.h"
 #include "physics/ShapeKinds.h"
+#include "physics/SlipEvents.h"
 
 namespace tabletop {
 namespace {
@@ -132,6 +133,7 @@ btVector3 spinAfterSlip(const btRigidBody& a, const btRigidBody& b, const btVect
 // impulse x N dt, x the combined rolling or spinning friction, clamped so
 // that it at most stops the motion.
 void DynamicsWorld::applyRollingResistance() {
+  resisted_.clear();
   btDispatcher* dispatcher = getDispatcher();
   for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
     btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
@@ -179,10 +181,19 @@ void DynamicsWorld::applyRollingResistance() {
       // As an angular impulse now, not a torque: Bullet's friction rows
       // read angular velocities without the step's external torque and add
       // it after the solve, which left a steady slip of tau dt r / I.
-      if (a->getInvMass() != 0) a->applyTorqueImpulse(-axis * impulse);
-      if (b->getInvMass() != 0) b->applyTorqueImpulse(axis * impulse);
+      if (a->getInvMass() != 0) a->applyTorqueImpulse(-axis * impulse), resisted_.emplace_back(a, -axis * impulse);
+      if (b->getInvMass() != 0) b->applyTorqueImpulse(axis * impulse), resisted_.emplace_back(b, axis * impulse);
     }
   }
+}
+
+void DynamicsWorld::shortenPart(double length) {
+  const double ratio = length / partLength_;
+  // The rolling resistance was given for the whole part: the rest goes back.
+  for (const auto& [body, impulse] : resisted_) body->applyTorqueImpulse(-impulse * (1.0 - ratio));
+  for (auto& resisted : resisted_) resisted.second *= ratio;
+  scaleCarriedImpulses(ratio);
+  partLength_ = length;
 }
 
 void DynamicsWorld::scaleCarriedImpulses(double ratio) {
@@ -266,18 +277,41 @@ void DynamicsWorld::solveConstraints(btContactSolverInfo& solverInfo) {
                                  scan.earliestSeparatedImpact(*getBroadphase()->getOverlappingPairCache(),
                                                               partLength_, kBounceSpeed),
                                  earliestFaceExit(*dispatcher, partLength_)});
-    if (cut < partLength_) {
-      scaleCarriedImpulses(cut / partLength_);
-      partLength_ = cut;
-    }
+    if (cut < partLength_) shortenPart(cut);
   }
+  // A part in which a slip turns round is cut there and solved again
+  // (SlipEvents.h), once: the next part takes what is left.
+  const std::vector<btManifoldPoint*> alongTurn = holdFrictionAlongTurn();
+  const SlipTurn turned = solvePart(solverInfo, scan, mayCut_ && secondOrder_, false);
+  for (btManifoldPoint* point : alongTurn) point->m_contactPointFlags &= ~BT_CONTACT_FLAG_LATERAL_FRICTION_INITIALIZED;
+  lastTurn_.reset();
+  if (!turned.manifold) return;
+  solvePart(solverInfo, scan, false, true);
+  if (turned.reversed) lastTurn_ = std::make_pair(contactOf(*turned.manifold), turned.along);
+  // A slip that ends the part at zero does not slide into the next one,
+  // where a slip made at its start (by rolling resistance) is no stop; one
+  // left short of zero (the time is estimated) is cut again there.
+  const double still = kSlipShare * turned.point->m_combinedFriction * getGravity().length() * partLength_;
+  if (slipSpeed(*turned.manifold, *turned.point) <= still) sliding_.erase(contactOf(*turned.manifold));
+}
+
+// Solves the part. With `mayTurn`, a part in which a slip turned round is
+// put back as it was before the solve and shortened to that time, and the
+// turn is returned: the part is to be solved again.
+SlipTurn DynamicsWorld::solvePart(btContactSolverInfo& solverInfo, const ImpactScan& scan, bool mayTurn,
+                                  bool afterTurn) {
+  btDispatcher* dispatcher = getDispatcher();
   // A part shorter than the step (cut at an impact, or what was left after
   // one) carries on what it was given, not what it solved: its impulses
   // also hold velocity corrections that do not grow with the part, and the
   // next, longer part would scale them up with its length (a remnant of
-  // 1 ns once gave the next step a start of 2,500 N s).
+  // 1 ns once gave the next step a start of 2,500 N s). A part cut where a
+  // slip turned (the second solve, at least a hundredth of the part, with
+  // no impact in it) carries on what it solved: its loads, which the
+  // rolling resistance of the next part reads (given none at a push's
+  // first step, a ball rolled a part unresisted).
   std::vector<std::pair<btManifoldPoint*, btVector3>> carried;
-  if (partLength_ < stepLength_) {
+  if (partLength_ < stepLength_ && !afterTurn) {
     for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
       btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
       for (int p = 0; p < manifold->getNumContacts(); ++p) {
@@ -303,18 +337,35 @@ void DynamicsWorld::solveConstraints(btContactSolverInfo& solverInfo) {
       if (speed > stopSpeed() && point.getDistance() <= speed * partLength_) closing.emplace_back(manifold, &point);
     }
   }
-  const std::vector<std::pair<const btPersistentManifold*, const btManifoldPoint*>> slipping = slippingPoints();
+  const double g = getGravity().length();
+  const std::vector<Slip> slipping =
+      secondOrder_ ? slippingPoints(*dispatcher, g, partLength_, kSlipShare) : std::vector<Slip>{};
   if (secondOrder_) scan.holdMeanVelocity(partLength_, heldGaps_);
   holdEdgeCurvature(*dispatcher, partLength_, stepLength_, secondOrder_, heldGaps_);
   holdEdgeLevers(*dispatcher, partLength_, heldPlaces_);
+  const bool mayTurnHere = mayTurn && !impacts && !slipping.empty();
+  if (mayTurnHere) partStart_.save(m_nonStaticRigidBodies, *dispatcher);
   btDiscreteDynamicsWorld::solveConstraints(solverInfo);
-  solved_ = true;
-  stopped_.clear();
-  for (const auto& [manifold, point] : closing) {
-    if (!(point->getAppliedImpulse() > 0)) continue;
-    stopped_.insert({manifold->getBody0(), manifold->getBody1()});
+  // A slip on a body given rolling resistance at the part's start counts
+  // only if its contact slid through the part before: the resistance makes
+  // a slip of its own, which friction stops at once, and cutting there cut
+  // every part of a rolling ball.
+  const auto counts = [&](const Slip& slip) {
+    return sliding_.count(contactOf(*slip.manifold)) > 0 ||
+           slip.velocity.length() > slip.point->m_combinedFriction * g * partLength_;
+  };
+  const SlipTurn turn = mayTurnHere ? earliestSlipTurn(*dispatcher, slipping, counts, g, partLength_, kSlipShare)
+                                    : SlipTurn{partLength_, nullptr, nullptr, btVector3(0, 0, 0), false};
+  const bool turned = turn.manifold != nullptr;
+  if (!turned) {
+    solved_ = true;
+    stopped_.clear();
+    for (const auto& [manifold, point] : closing) {
+      if (!(point->getAppliedImpulse() > 0)) continue;
+      stopped_.insert({manifold->getBody0(), manifold->getBody1()});
+    }
+    findSlipStops(slipping);
   }
-  findSlipStops(slipping);
   for (const auto& [point, impulses] : carried) {
     point->m_appliedImpulse = impulses.x();
     point->m_appliedImpulseLateral1 = impulses.y();
@@ -328,113 +379,15 @@ void DynamicsWorld::solveConstraints(btContactSolverInfo& solverInfo) {
     held->point->m_positionWorldOnB = held->onB;
   }
   heldPlaces_.clear();
-  bounced_.clear();
   solverInfo.m_numIterations = iterations;
   if (impacts) forgetImpacts();
-}
-
-namespace {
-
-// A bit of btManifoldPoint::m_contactPointFlags that Bullet's own flags
-// (1 to 16) leave free: the point is an impact in this step.
-constexpr int kImpactFlag = 1 << 20;
-
-}  // namespace
-
-// Marks the points whose bodies close along the normal faster than smooth
-// forces could make them in one step.
-bool DynamicsWorld::markImpacts(double timeStep) {
-  if (!(smoothAcceleration_ > 0)) return false;
-  bool any = false;
-  const double limit = smoothAcceleration_ * timeStep;
-  btDispatcher* dispatcher = getDispatcher();
-  for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
-    btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
-    for (int p = 0; p < manifold->getNumContacts(); ++p) {
-      btManifoldPoint& point = manifold->getContactPoint(p);
-      if (closingSpeed(*manifold, point) > limit) {
-        point.m_contactPointFlags |= kImpactFlag;
-        any = true;
-      }
-    }
+  if (!turned) {
+    bounced_.clear();
+    return turn;
   }
-  return any;
-}
-
-// Drops the solved impulses of the marked points, so that the next step
-// does not start from them.
-void DynamicsWorld::forgetImpacts() {
-  btDispatcher* dispatcher = getDispatcher();
-  for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
-    btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
-    for (int p = 0; p < manifold->getNumContacts(); ++p) {
-      btManifoldPoint& point = manifold->getContactPoint(p);
-      if (!(point.m_contactPointFlags & kImpactFlag)) continue;
-      point.m_appliedImpulse = 0;
-      point.m_appliedImpulseLateral1 = 0;
-      point.m_appliedImpulseLateral2 = 0;
-      point.m_contactPointFlags &= ~kImpactFlag;
-    }
-  }
-}
-
-// The points whose bodies slide over each other at the part's start, more
-// than a thousandth of what kinetic friction removes in the part: those
-// whose friction may stop the slip inside it.
-std::vector<std::pair<const btPersistentManifold*, const btManifoldPoint*>> DynamicsWorld::slippingPoints() {
-  std::vector<std::pair<const btPersistentManifold*, const btManifoldPoint*>> out;
-  if (!secondOrder_) return out;
-  const double g = getGravity().length();
-  btDispatcher* dispatcher = getDispatcher();
-  for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
-    const btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
-    for (int p = 0; p < manifold->getNumContacts(); ++p) {
-      const btManifoldPoint& point = manifold->getContactPoint(p);
-      if (slipSpeed(*manifold, point) > kSlipShare * point.m_combinedFriction * g * partLength_) {
-        out.emplace_back(manifold, &point);
-      }
-    }
-  }
-  return out;
-}
-
-// A body that slid through the part before and whose slipping points end
-// this solve holding less friction than they could (static friction: the slip stopped) slipped for the share of
-// the part that the friction used is of what kinetic friction gives, the
-// friction being constant while it slips.
-void DynamicsWorld::findSlipStops(
-    const std::vector<std::pair<const btPersistentManifold*, const btManifoldPoint*>>& slipping) {
-  slipShare_.clear();
-  struct Used {
-    double friction = 0, limit = 0;
-    btVector3 normal{0, 0, 0};  // the points' normals, by their loads, turned one way
-  };
-  std::unordered_map<const btCollisionObject*, Used> used;
-  for (const auto& [manifold, point] : slipping) {
-    const double friction = std::hypot(point->m_appliedImpulseLateral1, point->m_appliedImpulseLateral2);
-    const double limit = point->m_combinedFriction * point->m_appliedImpulse;
-    for (const btCollisionObject* body : {manifold->getBody0(), manifold->getBody1()}) {
-      if (body->isStaticOrKinematicObject()) continue;
-      Used& u = used[body];
-      u.friction += friction;
-      u.limit += limit;
-      const btVector3 n = point->m_normalWorldOnB * point->m_appliedImpulse;
-      u.normal += n.dot(u.normal) < 0 ? -n : n;
-    }
-  }
-  // Only a body that slid through the part before (its friction at its
-  // limit) stops in this one: a slip that starts in a part (a rolling
-  // body's, made by its rolling resistance) is not one that stops.
-  std::unordered_set<const btCollisionObject*> sliding;
-  for (const auto& [body, u] : used) {
-    if (!(u.limit > 0) || !(u.normal.length2() > 0)) continue;
-    if (u.friction >= (1.0 - kSlipShare) * u.limit) {
-      sliding.insert(body);
-    } else if (sliding_.count(body) > 0) {
-      slipShare_[body] = {u.friction / u.limit, u.normal.normalized()};
-    }
-  }
-  sliding_ = std::move(sliding);
+  partStart_.restore();
+  shortenPart(turn.time);
+  return turn;
 }
 
 }  // namespace tabletop

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <unordered_map>
 #include <unordered_set>
 #include <utility>
@@ -10,8 +11,11 @@
 #include "physics/ContactIslands.h"
 #include "physics/ContactResult.h"
 #include "physics/FaceEdges.h"
+#include "physics/SlipEvents.h"
 
 namespace tabletop {
+
+class ImpactScan;
 
 /// Bullet's discrete dynamics world with its contacts and integration
 /// corrected where a closed form showed them wrong (docs/bullet-corrections.md
@@ -37,7 +41,10 @@ namespace tabletop {
 ///     it was given;
 ///  7. a body leaves the box face under it at its own time: a part ends
 ///     where its centre reaches the face's edge, and the rows there see the
-///     part's motion (FaceEdges.h).
+///     part's motion (FaceEdges.h);
+///  8. a slip between a body and one it carries or rides on that stops or
+///     turns round inside a part ends the part there: the part is put back
+///     and solved again, shorter (SlipEvents.h).
 class DynamicsWorld : public btDiscreteDynamicsWorld {
  public:
   /// Bullet's world with its islands joined by contacts (ContactIslands).
@@ -76,8 +83,12 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   void forgetImpacts();
   void resolveTouchingImpacts(btContactSolverInfo& solverInfo);
   void scaleCarriedImpulses(double ratio);
-  std::vector<std::pair<const btPersistentManifold*, const btManifoldPoint*>> slippingPoints();
-  void findSlipStops(const std::vector<std::pair<const btPersistentManifold*, const btManifoldPoint*>>& slipping);
+  // Ends the part at `length` s instead: scales the impulses it carries
+  // and gives back the rolling resistance of the time it lost.
+  void shortenPart(double length);
+  SlipTurn solvePart(btContactSolverInfo& solverInfo, const ImpactScan& scan, bool mayTurn, bool afterTurn);
+  std::vector<btManifoldPoint*> holdFrictionAlongTurn();
+  void findSlipStops(const std::vector<Slip>& slipping);
   // Slips slower than this share of what kinetic friction removes in a
   // part are taken as stuck; friction this close to its limit as sliding.
   static constexpr double kSlipShare = 1e-3;
@@ -110,9 +121,12 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
     btVector3 normal;    // of the contacts it slipped on, unit
   };
   std::unordered_map<const btCollisionObject*, SlipStop> slipShare_;
-  std::unordered_set<const btCollisionObject*> sliding_;  // bodies whose friction was at its limit in it
+  SlidingContacts sliding_;  // contacts whose friction was at its limit in it
   std::vector<btVector3> startVelocities_;
   CarriedImpulses carried_;  // per non-static body, at the step's start
+  PartStart partStart_;      // the part's start, while a slip may turn in it
+  std::optional<std::pair<ContactKey, btVector3>> lastTurn_;  // the contact whose slip turned round, and its line
+  std::vector<std::pair<btRigidBody*, btVector3>> resisted_;  // the part's rolling-resistance impulses, N m s
   ContactIslands islands_;   // replaces the island manager Bullet made
 };
 

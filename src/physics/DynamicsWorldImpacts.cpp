@@ -198,4 +198,49 @@ void DynamicsWorld::resolveTouchingImpacts(btContactSolverInfo& solverInfo) {
   }
 }
 
+namespace {
+
+// A bit of btManifoldPoint::m_contactPointFlags that Bullet's own flags
+// (1 to 16) leave free: the point is an impact in this step.
+constexpr int kImpactFlag = 1 << 20;
+
+}  // namespace
+
+// Marks the points whose bodies close along the normal faster than smooth
+// forces could make them in one step.
+bool DynamicsWorld::markImpacts(double timeStep) {
+  if (!(smoothAcceleration_ > 0)) return false;
+  bool any = false;
+  const double limit = smoothAcceleration_ * timeStep;
+  btDispatcher* dispatcher = getDispatcher();
+  for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
+    btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
+    for (int p = 0; p < manifold->getNumContacts(); ++p) {
+      btManifoldPoint& point = manifold->getContactPoint(p);
+      if (closingSpeed(*manifold, point) > limit) {
+        point.m_contactPointFlags |= kImpactFlag;
+        any = true;
+      }
+    }
+  }
+  return any;
+}
+
+// Drops the solved impulses of the marked points, so that the next step
+// does not start from them.
+void DynamicsWorld::forgetImpacts() {
+  btDispatcher* dispatcher = getDispatcher();
+  for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
+    btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
+    for (int p = 0; p < manifold->getNumContacts(); ++p) {
+      btManifoldPoint& point = manifold->getContactPoint(p);
+      if (!(point.m_contactPointFlags & kImpactFlag)) continue;
+      point.m_appliedImpulse = 0;
+      point.m_appliedImpulseLateral1 = 0;
+      point.m_appliedImpulseLateral2 = 0;
+      point.m_contactPointFlags &= ~kImpactFlag;
+    }
+  }
+}
+
 }  // namespace tabletop

@@ -58,13 +58,16 @@ double closingSpeed(const btPersistentManifold& manifold, const btManifoldPoint&
   return -relative.dot(point.m_normalWorldOnB);
 }
 
-double slipSpeed(const btPersistentManifold& manifold, const btManifoldPoint& point) {
+btVector3 slipVelocity(const btPersistentManifold& manifold, const btManifoldPoint& point) {
   const btVector3 relative = velocityAt(manifold.getBody0(), point.getPositionWorldOnA()) -
                              velocityAt(manifold.getBody1(), point.getPositionWorldOnB());
   const btVector3& n = point.m_normalWorldOnB;
-  return (relative - n * relative.dot(n)).length();
+  return relative - n * relative.dot(n);
 }
 
+double slipSpeed(const btPersistentManifold& manifold, const btManifoldPoint& point) {
+  return slipVelocity(manifold, point).length();
+}
 
 bool strikesNow(const btPersistentManifold& manifold, const btManifoldPoint& point, double stepLength) {
   const double speed = closingSpeed(manifold, point);

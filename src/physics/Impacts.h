@@ -39,8 +39,9 @@ inline constexpr double kBounceSpeed = 0.2;
 /// each other along its normal (negative when they part).
 double closingSpeed(const btPersistentManifold& manifold, const btManifoldPoint& point);
 
-/// The speed, m/s, at which the bodies at `point` slide over each other
-/// (their relative velocity across the normal).
+/// The velocity, m/s, at which body A slides over body B at `point` (their
+/// relative velocity across the normal), and its speed.
+btVector3 slipVelocity(const btPersistentManifold& manifold, const btManifoldPoint& point);
 double slipSpeed(const btPersistentManifold& manifold, const btManifoldPoint& point);
 
 /// Whether `point` strikes at the start of a part of a step `stepLength`

@@ -87,9 +87,12 @@ void IslandSolver::dropSlidingCrossFriction(double timeStep) {
     const btSolverConstraint& along = m_tmpSolverContactFrictionConstraintPool[first];
     if (along.m_jacDiagABInv == 0) continue;
     // The first row lies along the slip when there is one (its right-hand
-    // side is the slip speed times the row's effective mass).
+    // side is the slip speed times the row's effective mass), or along the
+    // line a slip that just turned round slides on (DynamicsWorld).
+    const auto* point = static_cast<const btManifoldPoint*>(m_tmpSolverContactConstraintPool[c].m_originalContactPoint);
+    const bool turned = point && (point->m_contactPointFlags & BT_CONTACT_FLAG_LATERAL_FRICTION_INITIALIZED);
     const double slip = std::abs(along.m_rhs / along.m_jacDiagABInv);
-    if (slip <= along.m_friction * gravity_ * timeStep) continue;
+    if (!turned && slip <= along.m_friction * gravity_ * timeStep) continue;
     btSolverConstraint& across = m_tmpSolverContactFrictionConstraintPool[first + 1];
     across.m_friction = 0;
     across.m_lowerLimit = 0;
@@ -152,7 +155,7 @@ btScalar IslandSolver::solveGroupCacheFriendlySetup(btCollisionObject** bodies, 
   if (way_ == Way::Pivot) {
     btContactSolverInfo direct = info;
     direct.m_globalCfm = kDirectCfm;
-    direct.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
+    direct.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS | SOLVER_ENABLE_FRICTION_DIRECTION_CACHING;
     return btMLCPSolver::solveGroupCacheFriendlySetup(bodies, numBodies, manifolds, numManifolds, constraints,
                                                       numConstraints, direct, debugDrawer);
   }

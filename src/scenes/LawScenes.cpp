@@ -45,6 +45,29 @@ Scenario pushScene(const PushCase& c) {
   return ScenarioLoader::loadText(text.str(), "push.json");
 }
 
+Scenario rideScene(const RideCase& c) {
+  const double x0 = c.support == "table" ? -0.4 : 3.0;
+  std::ostringstream text;
+  text.precision(17);
+  text << R"({"version": 1, "name": "ride", "table": {"size": [2.4, 2.4], "material": {"friction": )" << c.mu1
+       << R"(}}, "ground": {"material": {"friction": )" << c.mu1 << R"(}}, "settings": {"timestep": )" << 1.0 / c.rate
+       << R"(, "duration": 2}, "entities": [)"
+       << R"({"name": "A", "shape": "cube", "size": )" << c.sizeA << R"(, "position": [)" << x0 << R"(, 0], "on": ")"
+       << c.support << R"(", "mass": )" << c.massA << R"(, "material": {"friction": 1}}, )"
+       << R"({"name": "B", "shape": "cube", "size": )" << c.sizeB << R"(, "position": [)" << x0
+       << R"(, 0], "on": "A", "mass": )" << c.massB << R"(, "material": {"friction": )" << c.mu2 << "}}], "
+       << R"("script": [{"push": {"entity": "A", "angle": )" << c.angle << R"(, "impulse": )" << c.massA * c.speed
+       << "}}]}";
+  return ScenarioLoader::loadText(text.str(), "ride.json");
+}
+
+std::string describe(const RideCase& c) {
+  std::ostringstream s;
+  s << c.massB << " kg on " << c.massA << " kg, mu " << c.mu1 << " / " << c.mu2 << ", on the " << c.support << ", at "
+    << c.angle << " deg, " << c.rate << " Hz";
+  return s.str();
+}
+
 std::string describe(const PushCase& c) {
   std::ostringstream s;
   s << c.shape << " " << c.size << " on the " << c.support << ", at " << c.angle << " deg, " << c.rate << " Hz";

@@ -42,6 +42,26 @@ std::pair<double, double> pushStart(const PushCase& c);
 /// "cube 0.1 on the table, at 30 deg, 60 Hz".
 std::string describe(const PushCase& c);
 
+/// A cube carrying a smaller one, the lower pushed, the scene of the riding
+/// law: on the table (from 0.4 m behind its centre) or on the floor (3 m
+/// from the table). Table and floor friction are `tableFriction`, A's 1, so
+/// A slides on its support at mu1 = tableFriction and B on A at mu2 = B's.
+struct RideCase {
+  std::string support;  ///< "table" or "ground"
+  double massA = 2, massB = 0.5;  ///< kg
+  double sizeA = 0.2, sizeB = 0.1;  ///< m, the cubes' edges
+  double mu1 = 0.6, mu2 = 0.3;
+  double speed = 0.6;  ///< m/s, A's after the push
+  double angle = 0;    ///< degrees, the push's world angle
+  double rate = 60;    ///< Hz
+};
+
+/// The scene, A then B, for 2 s.
+Scenario rideScene(const RideCase& c);
+
+/// "0.5 kg on 2 kg, mu 0.6 / 0.3, on the table, at 37 deg, 60 Hz".
+std::string describe(const RideCase& c);
+
 /// One 1 kg entity dropped from kDropHeight above its support, upright,
 /// the scene of the bouncing law: on the table at its centre, on the floor
 /// 3 m from it, or on the slab there. Every support's restitution is 1, so

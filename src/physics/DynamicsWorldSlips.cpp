@@ -1,0 +1,86 @@
+#include "physics/DynamicsWorld.h"
+
+#include <cmath>
+#include <map>
+#include <unordered_set>
+#include <vector>
+
+#include "physics/Impacts.h"
+
+// Slips that stop or turn round inside a part (DynamicsWorld, SlipEvents).
+namespace tabletop {
+
+// The points of the contact whose slip turned round at the start of this
+// part get one friction row, along the line it slid on: they start still,
+// and the pivoted solve's two rows, each bounded by mu N on its own, would
+// brake the new slip at up to 45 degrees to it and sqrt(2) times too hard
+// (a rider slipping at 37 degrees to the table's axes veered and stopped
+// 0.8 mm short at 60 Hz). IslandSolver drops the second row of a point so
+// marked.
+std::vector<btManifoldPoint*> DynamicsWorld::holdFrictionAlongTurn() {
+  std::vector<btManifoldPoint*> held;
+  if (!lastTurn_) return held;
+  const auto& [key, along] = *lastTurn_;
+  btDispatcher* dispatcher = getDispatcher();
+  for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
+    btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
+    if (contactOf(*manifold) != key) continue;
+    for (int p = 0; p < manifold->getNumContacts(); ++p) {
+      btManifoldPoint& point = manifold->getContactPoint(p);
+      const btVector3& n = point.m_normalWorldOnB;
+      const btVector3 first = along - n * along.dot(n);
+      if (!(first.length2() > 0)) continue;
+      point.m_lateralFrictionDir1 = first.normalized();
+      point.m_lateralFrictionDir2 = point.m_lateralFrictionDir1.cross(n);
+      point.m_contactPointFlags |= BT_CONTACT_FLAG_LATERAL_FRICTION_INITIALIZED;
+      held.push_back(&point);
+    }
+  }
+  return held;
+}
+
+// A body that slid through the part before and whose slipping points end
+// this solve holding less friction than they could (static friction: the slip stopped) slipped for the share of
+// the part that the friction used is of what kinetic friction gives, the
+// friction being constant while it slips.
+void DynamicsWorld::findSlipStops(const std::vector<Slip>& slipping) {
+  slipShare_.clear();
+  // Per contact: a body may slip on two at once (a cube under a rider on
+  // the table), and one may stop while the other slips on.
+  struct Used {
+    const btPersistentManifold* manifold;
+    double friction = 0, limit = 0;
+    btVector3 normal{0, 0, 0};  // the points' normals, by their loads, turned one way
+  };
+  std::map<ContactKey, Used> used;
+  for (const auto& [manifold, point, velocity] : slipping) {
+    Used& u = used.try_emplace(contactOf(*manifold), Used{manifold}).first->second;
+    u.friction += std::hypot(point->m_appliedImpulseLateral1, point->m_appliedImpulseLateral2);
+    u.limit += point->m_combinedFriction * point->m_appliedImpulse;
+    const btVector3 n = point->m_normalWorldOnB * point->m_appliedImpulse;
+    u.normal += n.dot(u.normal) < 0 ? -n : n;
+  }
+  // A contact slides while its friction is at its limit. Only one that slid
+  // through the part before stops in this one (a slip that starts in a
+  // part, a rolling body's made by its rolling resistance, is not one that
+  // stops); a body slipped for the share of the part until the first of
+  // its contacts stopped.
+  SlidingContacts sliding;
+  for (const auto& [key, u] : used) {
+    if (!(u.limit > 0) || !(u.normal.length2() > 0)) continue;
+    if (u.friction >= (1.0 - kSlipShare) * u.limit) {
+      sliding.insert(key);
+      continue;
+    }
+    if (sliding_.count(key) == 0) continue;
+    const double share = u.friction / u.limit;
+    for (const btCollisionObject* body : {u.manifold->getBody0(), u.manifold->getBody1()}) {
+      if (body->isStaticOrKinematicObject()) continue;
+      const auto known = slipShare_.find(body);
+      if (known == slipShare_.end() || share < known->second.share) slipShare_[body] = {share, u.normal.normalized()};
+    }
+  }
+  sliding_ = std::move(sliding);
+}
+
+}  // namespace tabletop

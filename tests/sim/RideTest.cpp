@@ -1,0 +1,90 @@
+// A cube carrying another, the lower one pushed: the rider slips back on
+// it until both move at one speed, then rides along (mu1 <= mu2) or slips
+// on forwards as the support brakes the lower cube harder than the
+// rider's friction can follow (mu1 > mu2). Every phase ends inside a step,
+// where a slip stops or turns round (physics/SlipEvents.h). Each cube's
+// travel against the closed form, over masses, frictions, supports,
+// directions and rates: within 0.1 mm from 60 Hz up, growing at second
+// order below (0.4 mm at 30 Hz), as for sliding (SlideTest).
+//
+// Directions: along the table's axes, both ways. Off them the rider that
+// slips on forwards misses by up to 0.8 mm at 30 Hz, 0.15 mm at 60 Hz and
+// 0.1 mm at 240 Hz (37 degrees; docs/bullet-corrections.md): after the
+// turn its slip is smaller than friction takes in a step, so the pivoted
+// solve keeps both friction rows, each bounded by mu N on its own, and
+// brakes it harder and askew. Measured and left, not hidden by a wider
+// tolerance.
+
+#include <algorithm>
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "core/Simulation.h"
+#include "scenes/LawScenes.h"
+#include "sim/SceneBuilder.h"
+#include "sim/ScriptRunner.h"
+
+namespace tabletop {
+namespace {
+
+constexpr double kG = 9.81;  // m/s^2
+
+struct Travel {
+  double a, b;  // m, each cube's from its start
+};
+
+// Phase 1 (0 to t1): A brakes at (mu2 mB + mu1 (mA + mB)) g / mA, B
+// speeds up at mu2 g, until both move at v1. Phase 2: together at mu1 g;
+// or, with mu1 > mu2, A at (mu1 (mA + mB) - mu2 mB) g / mA and B at mu2 g,
+// each to rest (the support then holds A against B's friction).
+Travel closedForm(const RideCase& c) {
+  const double aB = c.mu2 * kG, aA = -(c.mu2 * c.massB + c.mu1 * (c.massA + c.massB)) * kG / c.massA;
+  const double t1 = c.speed / (aB - aA), v1 = aB * t1;
+  Travel d{c.speed * t1 + 0.5 * aA * t1 * t1, 0.5 * aB * t1 * t1};
+  const double brakeA = c.mu1 <= c.mu2 ? c.mu1 * kG : (c.mu1 * (c.massA + c.massB) - c.mu2 * c.massB) * kG / c.massA;
+  const double brakeB = c.mu1 <= c.mu2 ? c.mu1 * kG : c.mu2 * kG;
+  d.a += v1 * v1 / (2.0 * brakeA);
+  d.b += v1 * v1 / (2.0 * brakeB);
+  return d;
+}
+
+Travel simulate(const RideCase& c) {
+  const Scenario s = rideScene(c);
+  auto sim = buildSimulation(s, s.settings, SimulationMode::Bullet);
+  const RunResult r = runScript(s, s.settings, *sim);
+  EXPECT_TRUE(r.complete) << describe(c);
+  const auto travel = [&](std::size_t i) {
+    const EntitySpec& e = s.entities[i];
+    return std::hypot(r.entities[i].position.x - e.position.x, r.entities[i].position.z - e.position.z);
+  };
+  return {travel(0), travel(1)};
+}
+
+TEST(Ride, EachCubeTravelsTheClosedFormDistance) {
+  struct Masses {
+    double a, b;
+  };
+  struct Frictions {
+    double mu1, mu2;
+  };
+  for (const char* support : {"table", "ground"}) {
+    for (const Masses m : {Masses{2.0, 0.5}, Masses{0.8, 1.2}}) {
+      for (const Frictions f : {Frictions{0.6, 0.3}, Frictions{0.2, 0.5}}) {
+        for (const double angle : {0.0, 90.0, 180.0}) {
+          for (const double rate : {30.0, 60.0, 240.0, 1000.0}) {
+            RideCase c{support, m.a, m.b};
+            c.mu1 = f.mu1, c.mu2 = f.mu2, c.angle = angle, c.rate = rate;
+            const Travel expected = closedForm(c), got = simulate(c);
+            const double tolerance = 1e-4 * std::max(1.0, std::pow(60.0 / rate, 2));
+            EXPECT_NEAR(got.a, expected.a, tolerance) << "A, " << describe(c);
+            EXPECT_NEAR(got.b, expected.b, tolerance) << "B, " << describe(c);
+          }
+        }
+      }
+    }
+  }
+}
+
+}  // namespace
+}  // namespace tabletop
