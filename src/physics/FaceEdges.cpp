@@ -71,6 +71,32 @@ btVector3 relativeVelocity(const btRigidBody& body, const btCollisionObject& sup
   return box.place.getBasis().transpose() * v;
 }
 
+// A point where the body on side A (`carriedIsA`) or B of `manifold` rests
+// on the upward face of a box of the other: the body, what carries it,
+// that box, and which of the box's axes the face is across.
+struct Carried {
+  const btRigidBody* body;
+  const btCollisionObject* support;
+  BoxPiece box;
+  int face;
+};
+std::optional<Carried> carriedOnFace(const btPersistentManifold& manifold, const btManifoldPoint& point,
+                                     bool carriedIsA) {
+  if (point.getDistance() > kOnBox) return std::nullopt;
+  const btRigidBody* body = movingBody(carriedIsA ? manifold.getBody0() : manifold.getBody1());
+  const btCollisionObject* support = carriedIsA ? manifold.getBody1() : manifold.getBody0();
+  if (!body || body->getGravity().length2() == 0) return std::nullopt;
+  const auto box = boxAt(*support, carriedIsA ? point.getPositionWorldOnB() : point.getPositionWorldOnA());
+  if (!box) return std::nullopt;
+  // The normal points from B to A; carried from below, within 45 degrees.
+  const btVector3 normal = carriedIsA ? point.m_normalWorldOnB : -point.m_normalWorldOnB;
+  if (normal.dot(-body->getGravity().normalized()) < 0.7) return std::nullopt;
+  const btVector3 local = box->place.getBasis().transpose() * normal;
+  const int face = local.closestAxis();
+  if (std::fabs(local[face]) < 0.999) return std::nullopt;  // an edge or a corner, not a face
+  return Carried{body, support, *box, face};
+}
+
 }  // namespace
 
 double earliestFaceExit(btDispatcher& dispatcher, double horizon) {
@@ -79,24 +105,15 @@ double earliestFaceExit(btDispatcher& dispatcher, double horizon) {
     const btPersistentManifold& manifold = *dispatcher.getManifoldByIndexInternal(m);
     for (int p = 0; p < manifold.getNumContacts(); ++p) {
       const btManifoldPoint& point = manifold.getContactPoint(p);
-      if (point.getDistance() > kOnBox) continue;
-      // Either body may be the one carried; the normal points from B to A.
-      for (const bool carriedIsA : {true, false}) {
-        const btRigidBody* body = movingBody(carriedIsA ? manifold.getBody0() : manifold.getBody1());
-        const btCollisionObject& support = *(carriedIsA ? manifold.getBody1() : manifold.getBody0());
-        if (!body || body->getGravity().length2() == 0) continue;
-        const auto box = boxAt(support, carriedIsA ? point.getPositionWorldOnB() : point.getPositionWorldOnA());
-        if (!box) continue;
-        const btVector3 normal = carriedIsA ? point.m_normalWorldOnB : -point.m_normalWorldOnB;
-        if (normal.dot(-body->getGravity().normalized()) < 0.7) continue;  // not carried from below
-        const btVector3 local = box->place.getBasis().transpose() * normal;
-        const int face = local.closestAxis();
-        if (std::fabs(local[face]) < 0.999) continue;  // an edge or a corner, not a face
-        const btVector3 centre = box->place.invXform(body->getCenterOfMassPosition());
-        const btVector3 v = relativeVelocity(*body, support, *box);
+      for (const bool carriedIsA : {true, false}) {  // either body may be the one carried
+        const auto carried = carriedOnFace(manifold, point, carriedIsA);
+        if (!carried) continue;
+        const BoxPiece& box = carried->box;
+        const btVector3 centre = box.place.invXform(carried->body->getCenterOfMassPosition());
+        const btVector3 v = relativeVelocity(*carried->body, *carried->support, box);
         for (int i = 0; i < 3; ++i) {
-          if (i == face || v[i] == 0) continue;
-          const double left = box->half[i] - (v[i] > 0 ? centre[i] : -centre[i]);
+          if (i == carried->face || v[i] == 0) continue;
+          const double left = box.half[i] - (v[i] > 0 ? centre[i] : -centre[i]);
           if (!(left > edgeBand(v[i], horizon))) continue;
           earliest = std::min(earliest, (left + kOnEdge) / std::fabs(v[i]));
         }
@@ -188,36 +205,29 @@ void holdEdgeLevers(btDispatcher& dispatcher, double length, std::vector<HeldPla
     btPersistentManifold& manifold = *dispatcher.getManifoldByIndexInternal(m);
     for (int p = 0; p < manifold.getNumContacts(); ++p) {
       btManifoldPoint& point = manifold.getContactPoint(p);
-      if (point.getDistance() > kOnBox) continue;
       for (const bool carriedIsA : {true, false}) {
-        const btCollisionObject* object = carriedIsA ? manifold.getBody0() : manifold.getBody1();
-        const btRigidBody* body = movingBody(object);
-        if (!body || body->getGravity().length2() == 0) continue;
-        const btCollisionObject& support = *(carriedIsA ? manifold.getBody1() : manifold.getBody0());
+        const auto carried = carriedOnFace(manifold, point, carriedIsA);
+        if (!carried) continue;
         const btVector3& onBody = carriedIsA ? point.getPositionWorldOnA() : point.getPositionWorldOnB();
-        const auto box = boxAt(support, carriedIsA ? point.getPositionWorldOnB() : point.getPositionWorldOnA());
-        const auto own = boxAt(*object, onBody);
-        if (!box || !own) continue;
-        const btVector3 normal = carriedIsA ? point.m_normalWorldOnB : -point.m_normalWorldOnB;
-        if (normal.dot(-body->getGravity().normalized()) < 0.7) continue;
-        const btVector3 local = box->place.getBasis().transpose() * normal;
-        const int face = local.closestAxis();
-        if (std::fabs(local[face]) < 0.999) continue;
+        const auto own = boxAt(*carried->body, onBody);
+        if (!own) continue;
+        const BoxPiece& box = carried->box;
+        const int face = carried->face;
         // A corner of the body's own box moves with it: only a point inside
         // its face, cut out by the support's edge, stays on that edge.
         const btVector3 mine = own->place.invXform(onBody);
         int corner = 0;
         for (int i = 0; i < 3; ++i) corner += std::fabs(mine[i]) >= own->half[i] - kOnSide ? 1 : 0;
         if (corner == 3) continue;
-        const btVector3 there = box->place.invXform(carriedIsA ? point.getPositionWorldOnB() : point.getPositionWorldOnA());
-        const btVector3 v = relativeVelocity(*body, support, *box);
+        const btVector3 there = box.place.invXform(carriedIsA ? point.getPositionWorldOnB() : point.getPositionWorldOnA());
+        const btVector3 v = relativeVelocity(*carried->body, *carried->support, box);
         btVector3 across(0, 0, 0);
         for (int i = 0; i < 3; ++i) {
-          if (i != face && std::fabs(there[i]) >= box->half[i] - kOnSide) across[i] = v[i];
+          if (i != face && std::fabs(there[i]) >= box.half[i] - kOnSide) across[i] = v[i];
         }
         const double least = std::min({own->half.x(), own->half.y(), own->half.z()});
         if (across.length2() == 0 || across.length() * length > kLeverTravel * least) continue;
-        const btVector3 back = box->place.getBasis() * across * (-0.5 * length);
+        const btVector3 back = box.place.getBasis() * across * (-0.5 * length);
         saved.push_back({&point, point.m_positionWorldOnA, point.m_positionWorldOnB});
         (carriedIsA ? point.m_positionWorldOnA : point.m_positionWorldOnB) += back;
       }
