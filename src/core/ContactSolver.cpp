@@ -26,7 +26,9 @@ std::optional<ContactSolver> contactSolverFromString(std::string_view name) { re
 std::string describeSolver(ContactSolver s, int iterations) {
   const std::string sweeps = std::to_string(iterations) + " iterations";
   if (s == ContactSolver::SequentialImpulse) return sweeps;
-  if (s == ContactSolver::Automatic) return "auto solver (dantzig where a load rests or anything but a ball slides, else " + sweeps + ")";
+  if (s == ContactSolver::Automatic) {
+    return "auto solver (dantzig where a load rests or anything but a ball slides with friction, else " + sweeps + ")";
+  }
   return std::string(toString(s)) + " solver (" + sweeps + " above " + std::to_string(kDirectRowLimit) + " rows)";
 }
 

@@ -43,8 +43,8 @@ std::string_view toString(ContactSolver s);
 /// How a run's header names the solver: "10 iterations" for sequential
 /// impulses; "dantzig solver (10 iterations above 300 rows)" for Dantzig,
 /// whose islands ignore the count unless too large; "auto solver (dantzig
-/// where a load rests or anything but a ball slides, else 10
-/// iterations)".
+/// where a load rests or anything but a ball slides with friction, else
+/// 10 iterations)".
 std::string describeSolver(ContactSolver s, int iterations);
 
 /// One line on how a run's islands were solved: "islands solved exactly

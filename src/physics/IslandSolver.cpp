@@ -63,7 +63,8 @@ IslandSolver::Way IslandSolver::chooseWay(btPersistentManifold** manifolds, int 
         return fits ? Way::Pivot : Way::LongSweeps;
       }
       sunk = sunk || point.getDistance() < -kLoadTouching;
-      slides = slides || (!uncoupled(*manifold) && slipSpeed(*manifold, point) > kSlideSpeed);
+      const bool sliding = point.m_combinedFriction > 0 && slipSpeed(*manifold, point) > kSlideSpeed;
+      slides = slides || (sliding && !uncoupled(*manifold));
     }
   }
   // A slide with a point sunk in (a landing) is left to the sweeps' split

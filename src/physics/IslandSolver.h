@@ -27,7 +27,10 @@ namespace tabletop {
 /// A ball's point (against a ball or something that does not move) slides
 /// without pivoting: its rows do not act on each other, one sweep solves
 /// them exactly, and pivoting only cost (a ball rolling off the table took
-/// 1.26 times the instructions). An island the pivoting
+/// 1.26 times the instructions). Nor does a frictionless one, which has no
+/// friction to shift the load (a cube gliding off a frictionless table:
+/// 13% fewer instructions, its tip 0.010 mm from the edge at 60 Hz instead
+/// of 0.007). An island the pivoting
 /// fails on is swept (Bullet's own fallback). The push out of penetration
 /// (split impulse) is pivoted on the normal rows alone; should that fail,
 /// the step keeps its exact velocities and pushes nothing out.

@@ -104,7 +104,9 @@ SlipTurn earliestSlipTurn(btDispatcher& dispatcher, const std::vector<Slip>& sli
     }
     const double missing = std::max(0.0, mu * load - used) * slipPerImpulse(*slip.manifold, point, along, loaded);
     const double t = length * before / (before - after + missing);
-    if (t > kLeastShare * length && t < (1.0 - kLeastShare) * length && t < earliest.time) earliest = {t, slip.manifold, slip.point, along, after < -still};
+    if (t > kLeastShare * length && t < (1.0 - kLeastShare) * length && t < earliest.time) {
+      earliest = {t, slip.manifold, slip.point, along, after < -still};
+    }
   }
   return earliest;
 }

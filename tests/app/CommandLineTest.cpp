@@ -70,7 +70,7 @@ TEST(CommandLine, RunTextHonoursOverrides) {
   const Outcome o = run(kBin + "tabletop run " + kScenarios +
                         "example1_single_cube.json --timestep 0.002 --iterations 20 --duration 0.5");
   ASSERT_EQ(o.status, 0) << o.err;
-  EXPECT_NE(o.out.find("timestep 0.002000 s, auto solver (dantzig where a load rests or anything but a ball slides, else 20 iterations), trapezoid "
+  EXPECT_NE(o.out.find("timestep 0.002000 s, auto solver (dantzig where a load rests or anything but a ball slides with friction, else 20 iterations), trapezoid "
                         "integrator; simulated 0.500 s in 250 steps"), std::string::npos)
       << o.out;
   EXPECT_NE(o.out.find("push A Left"), std::string::npos);
@@ -82,7 +82,7 @@ TEST(CommandLine, RunTextHonoursOverrides) {
 TEST(CommandLine, RunHeaderNamesTheContactSolver) {
   const Outcome o = run(kBin + "tabletop run " + kScenarios + "hard/mass_ratio_100.json --duration 0.05");
   ASSERT_EQ(o.status, 0) << o.err;
-  EXPECT_NE(o.out.find(", auto solver (dantzig where a load rests or anything but a ball slides, else " +
+  EXPECT_NE(o.out.find(", auto solver (dantzig where a load rests or anything but a ball slides with friction, else " +
                        std::to_string(tabletop::Settings{}.iterations) + " iterations), trapezoid integrator;"),
             std::string::npos)
       << o.out;
