@@ -279,8 +279,8 @@ void DynamicsWorld::solveConstraints(btContactSolverInfo& solverInfo) {
                                  earliestFaceExit(*dispatcher, partLength_)});
     if (cut < partLength_) shortenPart(cut);
   }
-  // A part in which a slip turns round is cut there and solved again
-  // (SlipEvents.h), once: the next part takes what is left.
+  // A part in which a slip turns round or stops is cut there and solved
+  // again (SlipEvents.h), once: the next part takes what is left.
   const std::vector<btManifoldPoint*> alongTurn = holdFrictionAlongTurn();
   const SlipTurn turned = solvePart(solverInfo, scan, mayCut_ && secondOrder_, false);
   for (btManifoldPoint* point : alongTurn) point->m_contactPointFlags &= ~BT_CONTACT_FLAG_LATERAL_FRICTION_INITIALIZED;
@@ -346,10 +346,10 @@ SlipTurn DynamicsWorld::solvePart(btContactSolverInfo& solverInfo, const ImpactS
   const bool mayTurnHere = mayTurn && !impacts && !slipping.empty();
   if (mayTurnHere) partStart_.save(m_nonStaticRigidBodies, *dispatcher);
   btDiscreteDynamicsWorld::solveConstraints(solverInfo);
-  // A slip on a body given rolling resistance at the part's start counts
-  // only if its contact slid through the part before: the resistance makes
-  // a slip of its own, which friction stops at once, and cutting there cut
-  // every part of a rolling ball.
+  // A slip counts if its contact slid through the part before, or if it is
+  // more than friction takes in the part (a push's): rolling resistance
+  // makes a small slip of its own at a part's start, which friction stops
+  // at once, and cutting there cut every part of a rolling ball.
   const auto counts = [&](const Slip& slip) {
     return sliding_.count(contactOf(*slip.manifold)) > 0 ||
            slip.velocity.length() > slip.point->m_combinedFriction * g * partLength_;

@@ -39,10 +39,11 @@ std::vector<btManifoldPoint*> DynamicsWorld::holdFrictionAlongTurn() {
   return held;
 }
 
-// A body that slid through the part before and whose slipping points end
-// this solve holding less friction than they could (static friction: the slip stopped) slipped for the share of
-// the part that the friction used is of what kinetic friction gives, the
-// friction being constant while it slips.
+// Which contacts slid through this part, and which stopped in it: a body
+// on a contact that slid through the part before and ends this solve
+// holding less friction than it could (static friction: the slip stopped)
+// slipped for the share of the part that the friction used is of what
+// kinetic friction gives, that friction being constant while it slips.
 void DynamicsWorld::findSlipStops(const std::vector<Slip>& slipping) {
   slipShare_.clear();
   // Per contact: a body may slip on two at once (a cube under a rider on
