@@ -54,7 +54,7 @@ Scenario rideScene(const RideCase& c) {
        << R"(, "duration": 2}, "entities": [)"
        << R"({"name": "A", "shape": "cube", "size": )" << c.sizeA << R"(, "position": [)" << x0 << R"(, 0], "on": ")"
        << c.support << R"(", "mass": )" << c.massA << R"(, "material": {"friction": 1}}, )"
-       << R"({"name": "B", "shape": "cube", "size": )" << c.sizeB << R"(, "position": [)" << x0
+       << R"({"name": "B", "shape": ")" << c.shapeB << R"(", "size": )" << c.sizeB << R"(, "position": [)" << x0
        << R"(, 0], "on": "A", "mass": )" << c.massB << R"(, "material": {"friction": )" << c.mu2 << "}}], "
        << R"("script": [{"push": {"entity": "A", "angle": )" << c.angle << R"(, "impulse": )" << c.massA * c.speed
        << "}}]}";
@@ -63,7 +63,7 @@ Scenario rideScene(const RideCase& c) {
 
 std::string describe(const RideCase& c) {
   std::ostringstream s;
-  s << c.massB << " kg on " << c.massA << " kg, mu " << c.mu1 << " / " << c.mu2 << ", on the " << c.support << ", at "
+  s << c.massB << " kg " << c.shapeB << " " << c.sizeB << " on " << c.massA << " kg, mu " << c.mu1 << " / " << c.mu2 << ", on the " << c.support << ", at "
     << c.angle << " deg, " << c.rate << " Hz";
   return s.str();
 }

@@ -42,14 +42,17 @@ std::pair<double, double> pushStart(const PushCase& c);
 /// "cube 0.1 on the table, at 30 deg, 60 Hz".
 std::string describe(const PushCase& c);
 
-/// A cube carrying a smaller one, the lower pushed, the scene of the riding
-/// law: on the table (from 0.4 m behind its centre) or on the floor (3 m
-/// from the table). Table and floor friction are `tableFriction`, A's 1, so
-/// A slides on its support at mu1 = tableFriction and B on A at mu2 = B's.
+/// A cube carrying a rider (a smaller cube, or any shape standing on its
+/// base), the cube pushed, the scene of the riding law: on the table (from
+/// 0.4 m behind its centre) or on the floor (3 m from the table). Table and
+/// floor friction are mu1, A's 1, so A slides on its support at mu1 and B
+/// on A at mu2, B's own.
 struct RideCase {
   std::string support;  ///< "table" or "ground"
   double massA = 2, massB = 0.5;  ///< kg
-  double sizeA = 0.2, sizeB = 0.1;  ///< m, the cubes' edges
+  double sizeA = 0.2;             ///< m, the cube's edge
+  std::string shapeB = "cube";    ///< the rider's scenario "shape"
+  std::string sizeB = "0.1";      ///< and "size", as JSON
   double mu1 = 0.6, mu2 = 0.3;
   double speed = 0.6;  ///< m/s, A's after the push
   double angle = 0;    ///< degrees, the push's world angle

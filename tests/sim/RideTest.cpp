@@ -1,10 +1,11 @@
-// A cube carrying another, the lower one pushed: the rider slips back on
+// A cube carrying a rider (a cube, a box, a cylinder or a truncated cone
+// standing on its base), the cube pushed: the rider slips back on
 // it until both move at one speed, then rides along (mu1 <= mu2) or slips
 // on forwards as the support brakes the lower cube harder than the
 // rider's friction can follow (mu1 > mu2). Every phase ends inside a step,
 // where a slip stops or turns round (physics/SlipEvents.h). Each cube's
-// travel against the closed form, over masses, frictions, supports,
-// directions and rates: within 0.1 mm from 60 Hz up, growing at second
+// travel against the closed form, over riders, masses, frictions,
+// supports, directions and rates: within 0.1 mm from 60 Hz up, growing at second
 // order below (0.4 mm at 30 Hz), as for sliding (SlideTest).
 //
 // Directions: along the table's axes, both ways. Off them the rider that
@@ -61,24 +62,33 @@ Travel simulate(const RideCase& c) {
   return {travel(0), travel(1)};
 }
 
-TEST(Ride, EachCubeTravelsTheClosedFormDistance) {
+TEST(Ride, TheCubeAndItsRiderTravelTheClosedFormDistances) {
+  struct Rider {
+    const char* shape;
+    const char* size;
+  };
   struct Masses {
     double a, b;
   };
   struct Frictions {
     double mu1, mu2;
   };
-  for (const char* support : {"table", "ground"}) {
-    for (const Masses m : {Masses{2.0, 0.5}, Masses{0.8, 1.2}}) {
-      for (const Frictions f : {Frictions{0.6, 0.3}, Frictions{0.2, 0.5}}) {
-        for (const double angle : {0.0, 90.0, 180.0}) {
-          for (const double rate : {30.0, 60.0, 240.0, 1000.0}) {
-            RideCase c{support, m.a, m.b};
-            c.mu1 = f.mu1, c.mu2 = f.mu2, c.angle = angle, c.rate = rate;
-            const Travel expected = closedForm(c), got = simulate(c);
-            const double tolerance = 1e-4 * std::max(1.0, std::pow(60.0 / rate, 2));
-            EXPECT_NEAR(got.a, expected.a, tolerance) << "A, " << describe(c);
-            EXPECT_NEAR(got.b, expected.b, tolerance) << "B, " << describe(c);
+  const Rider riders[] = {
+      {"cube", "0.1"}, {"box", "[0.12, 0.04, 0.08]"}, {"cylinder", "[0.04, 0.04, 0.08]"}, {"cylinder", "[0.05, 0.03, 0.06]"}};
+  for (const Rider& rider : riders) {
+    for (const char* support : {"table", "ground"}) {
+      for (const Masses m : {Masses{2.0, 0.5}, Masses{0.8, 1.2}}) {
+        for (const Frictions f : {Frictions{0.6, 0.3}, Frictions{0.2, 0.5}}) {
+          for (const double angle : {0.0, 90.0, 180.0}) {
+            for (const double rate : {30.0, 60.0, 240.0, 1000.0}) {
+              RideCase c{support, m.a, m.b};
+              c.shapeB = rider.shape, c.sizeB = rider.size;
+              c.mu1 = f.mu1, c.mu2 = f.mu2, c.angle = angle, c.rate = rate;
+              const Travel expected = closedForm(c), got = simulate(c);
+              const double tolerance = 1e-4 * std::max(1.0, std::pow(60.0 / rate, 2));
+              EXPECT_NEAR(got.a, expected.a, tolerance) << "A, " << describe(c);
+              EXPECT_NEAR(got.b, expected.b, tolerance) << "B, " << describe(c);
+            }
           }
         }
       }
