@@ -282,11 +282,12 @@ void DynamicsWorld::solveConstraints(btContactSolverInfo& solverInfo) {
   // A part in which a slip turns round or stops is cut there and solved
   // again (SlipEvents.h), once: the next part takes what is left.
   const std::vector<btManifoldPoint*> alongTurn = holdFrictionAlongTurn();
-  const SlipTurn turned = solvePart(solverInfo, scan, mayCut_ && secondOrder_, false);
+  const SlipTurn turned =
+      solvePart(solverInfo, scan, mayCut_ && secondOrder_ ? PartSolve::kMayCutAtSlip : PartSolve::kWhole);
   for (btManifoldPoint* point : alongTurn) point->m_contactPointFlags &= ~BT_CONTACT_FLAG_LATERAL_FRICTION_INITIALIZED;
   lastTurn_.reset();
   if (!turned.manifold) return;
-  solvePart(solverInfo, scan, false, true);
+  solvePart(solverInfo, scan, PartSolve::kAfterSlipCut);
   if (turned.reversed) lastTurn_ = std::make_pair(contactOf(*turned.manifold), turned.along);
   // A slip that ends the part at zero does not slide into the next one,
   // where a slip made at its start (by rolling resistance) is no stop; one
@@ -295,11 +296,10 @@ void DynamicsWorld::solveConstraints(btContactSolverInfo& solverInfo) {
   if (slipSpeed(*turned.manifold, *turned.point) <= still) sliding_.erase(contactOf(*turned.manifold));
 }
 
-// Solves the part. With `mayTurn`, a part in which a slip turned round is
+// Solves the part. With kMayCutAtSlip, a part in which a slip turned round is
 // put back as it was before the solve and shortened to that time, and the
 // turn is returned: the part is to be solved again.
-SlipTurn DynamicsWorld::solvePart(btContactSolverInfo& solverInfo, const ImpactScan& scan, bool mayTurn,
-                                  bool afterTurn) {
+SlipTurn DynamicsWorld::solvePart(btContactSolverInfo& solverInfo, const ImpactScan& scan, PartSolve how) {
   btDispatcher* dispatcher = getDispatcher();
   // A part shorter than the step (cut at an impact, or what was left after
   // one) carries on what it was given, not what it solved: its impulses
@@ -311,7 +311,7 @@ SlipTurn DynamicsWorld::solvePart(btContactSolverInfo& solverInfo, const ImpactS
   // rolling resistance of the next part reads (given none at a push's
   // first step, a ball rolled a part unresisted).
   std::vector<std::pair<btManifoldPoint*, btVector3>> carried;
-  if (partLength_ < stepLength_ && !afterTurn) {
+  if (partLength_ < stepLength_ && how != PartSolve::kAfterSlipCut) {
     for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
       btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
       for (int p = 0; p < manifold->getNumContacts(); ++p) {
@@ -343,9 +343,6 @@ SlipTurn DynamicsWorld::solvePart(btContactSolverInfo& solverInfo, const ImpactS
   if (secondOrder_) scan.holdMeanVelocity(partLength_, heldGaps_);
   holdEdgeCurvature(*dispatcher, partLength_, stepLength_, secondOrder_, heldGaps_);
   holdEdgeLevers(*dispatcher, partLength_, heldPlaces_);
-  const bool mayTurnHere = mayTurn && !impacts && !slipping.empty();
-  if (mayTurnHere) partStart_.save(m_nonStaticRigidBodies, *dispatcher);
-  btDiscreteDynamicsWorld::solveConstraints(solverInfo);
   // A slip counts if its contact slid through the part before, or if it is
   // more than friction takes in the part (a push's): rolling resistance
   // makes a small slip of its own at a part's start, which friction stops
@@ -354,8 +351,13 @@ SlipTurn DynamicsWorld::solvePart(btContactSolverInfo& solverInfo, const ImpactS
     return sliding_.count(contactOf(*slip.manifold)) > 0 ||
            slip.velocity.length() > slip.point->m_combinedFriction * g * partLength_;
   };
-  const SlipTurn turn = mayTurnHere ? earliestSlipTurn(*dispatcher, slipping, counts, g, partLength_, kSlipShare)
-                                    : SlipTurn{partLength_, nullptr, nullptr, btVector3(0, 0, 0), false};
+  const std::vector<Slip> mayTurn = how == PartSolve::kMayCutAtSlip && !impacts
+                                        ? slipsThatMayTurn(*dispatcher, slipping, counts)
+                                        : std::vector<Slip>{};
+  if (!mayTurn.empty()) partStart_.save(m_nonStaticRigidBodies, *dispatcher);
+  btDiscreteDynamicsWorld::solveConstraints(solverInfo);
+  const SlipTurn turn = !mayTurn.empty() ? earliestSlipTurn(mayTurn, g, partLength_, kSlipShare)
+                                         : SlipTurn{partLength_, nullptr, nullptr, btVector3(0, 0, 0), false};
   const bool turned = turn.manifold != nullptr;
   if (!turned) {
     solved_ = true;

@@ -86,7 +86,10 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   // Ends the part at `length` s instead: scales the impulses it carries
   // and gives back the rolling resistance of the time it lost.
   void shortenPart(double length);
-  SlipTurn solvePart(btContactSolverInfo& solverInfo, const ImpactScan& scan, bool mayTurn, bool afterTurn);
+  // How a part is solved: whole; or ready to be cut where a slip turns
+  // round (SlipEvents.h); or again, after such a cut.
+  enum class PartSolve { kWhole, kMayCutAtSlip, kAfterSlipCut };
+  SlipTurn solvePart(btContactSolverInfo& solverInfo, const ImpactScan& scan, PartSolve how);
   std::vector<btManifoldPoint*> holdFrictionAlongTurn();
   void findSlipStops(const std::vector<Slip>& slipping);
   // Slips slower than this share of what kinetic friction removes in a

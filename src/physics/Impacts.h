@@ -21,6 +21,10 @@ namespace tabletop {
 /// How close, in metres, two bodies are when they count as touching.
 inline constexpr double kTouching = 1e-6;
 
+/// How close, in metres, two bodies are when their contact can carry a
+/// load: a resting point sits within the solver's slop of touching.
+inline constexpr double kLoadTouching = 1e-4;
+
 /// Points that close within this time, s, of each other strike together:
 /// a face landing on a face, found a few micrometres apart at one corner
 /// and touching at another (GJK's distance is good to about 1e-3 of

@@ -13,25 +13,19 @@
 namespace tabletop {
 namespace {
 
-// A point carries a load when the bodies touch (within this, m) ...
-constexpr double kLoadTouching = 1e-4;
-// ... and its normal is within 45 degrees of the vertical (cos 45).
+// A point carries a load when the bodies touch (within kLoadTouching) and
+// its normal is within 45 degrees of the vertical (cos 45).
 constexpr double kLoadNormal = 0.7071;
 // A touching point slides when its bodies slip over each other faster
 // than this, m/s.
 constexpr double kSlideSpeed = 1e-3;
-
-bool isDynamic(const btCollisionObject* object) {
-  const btRigidBody* body = btRigidBody::upcast(object);
-  return body != nullptr && body->getInvMass() > 0;
-}
 
 // Whether a point's rows are independent of each other: each body at it is
 // a ball (whose normal passes through its centre, and whose inertia is the
 // same about every axis) or does not move. One sweep then solves them
 // exactly, and pivoting buys nothing.
 bool uncoupled(const btPersistentManifold& manifold) {
-  const auto plain = [](const btCollisionObject* o) { return isBall(*o) || !isDynamic(o); };
+  const auto plain = [](const btCollisionObject* o) { return isBall(*o) || !isMoving(*o); };
   return plain(manifold.getBody0()) && plain(manifold.getBody1());
 }
 
@@ -53,7 +47,7 @@ IslandSolver::Way IslandSolver::chooseWay(btPersistentManifold** manifolds, int 
   bool sunk = false;
   for (int m = 0; m < numManifolds; ++m) {
     const btPersistentManifold* manifold = manifolds[m];
-    const bool bothDynamic = isDynamic(manifold->getBody0()) && isDynamic(manifold->getBody1());
+    const bool bothDynamic = isMoving(*manifold->getBody0()) && isMoving(*manifold->getBody1());
     for (int p = 0; p < manifold->getNumContacts(); ++p) {
       const btManifoldPoint& point = manifold->getContactPoint(p);
       if (point.getDistance() > kLoadTouching) continue;

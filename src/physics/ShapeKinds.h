@@ -1,6 +1,6 @@
 #pragma once
 
-#include <btBulletCollisionCommon.h>
+#include <btBulletDynamicsCommon.h>
 
 namespace tabletop {
 
@@ -12,5 +12,12 @@ inline bool isBall(const btCollisionObject& object) { return isBall(*object.getC
 
 /// Whether a shape is a box (a cube, a SolidBox, a piece of the table).
 inline bool isBox(const btCollisionShape& shape) { return shape.getShapeType() == BOX_SHAPE_PROXYTYPE; }
+
+/// Whether an object is a body that moves: a rigid body of finite mass (not
+/// the table, the floor or a body held kinematic).
+inline bool isMoving(const btCollisionObject& object) {
+  const btRigidBody* body = btRigidBody::upcast(&object);
+  return body != nullptr && body->getInvMass() > 0;
+}
 
 }  // namespace tabletop

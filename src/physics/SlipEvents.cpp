@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "physics/Impacts.h"
+#include "physics/ShapeKinds.h"
 
 namespace tabletop {
 namespace {
@@ -12,26 +13,18 @@ namespace {
 // the part's solve (DynamicsWorld's slip share): a cut there buys little.
 constexpr double kLeastShare = 0.01;
 
-// Bodies this close, m, touch (their contact can carry a load).
-constexpr double kTouchingHere = 1e-4;
-
-bool moves(const btCollisionObject* object) {
-  const btRigidBody* body = btRigidBody::upcast(object);
-  return body && body->getInvMass() > 0;
-}
-
 // Whether a moving `object` touches another moving body (carries it, or
 // rides on it).
 bool touchesAnother(btDispatcher& dispatcher, const btCollisionObject* object) {
-  if (!moves(object)) return false;
+  if (!isMoving(*object)) return false;
   for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
     const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
     const btCollisionObject* other = manifold->getBody0() == object   ? manifold->getBody1()
                                      : manifold->getBody1() == object ? manifold->getBody0()
                                                                       : nullptr;
-    if (!other || !moves(other)) continue;
+    if (!other || !isMoving(*other)) continue;
     for (int p = 0; p < manifold->getNumContacts(); ++p) {
-      if (manifold->getContactPoint(p).getDistance() <= kTouchingHere) return true;
+      if (manifold->getContactPoint(p).getDistance() <= kLoadTouching) return true;
     }
   }
   return false;
@@ -72,15 +65,22 @@ double slipPerImpulse(const btPersistentManifold& manifold, const btManifoldPoin
 
 }  // namespace
 
-SlipTurn earliestSlipTurn(btDispatcher& dispatcher, const std::vector<Slip>& slips,
-                          const std::function<bool(const Slip&)>& counts, double g, double length,
-                          double share) {
-  SlipTurn earliest{length, nullptr, nullptr, btVector3(0, 0, 0), false};
+std::vector<Slip> slipsThatMayTurn(btDispatcher& dispatcher, const std::vector<Slip>& slips,
+                                   const std::function<bool(const Slip&)>& counts) {
+  std::vector<Slip> out;
   for (const Slip& slip : slips) {
     const btCollisionObject* a = slip.manifold->getBody0();
     const btCollisionObject* b = slip.manifold->getBody1();
     if (!counts(slip)) continue;
-    if (!(moves(a) && moves(b)) && !touchesAnother(dispatcher, a) && !touchesAnother(dispatcher, b)) continue;
+    if (!(isMoving(*a) && isMoving(*b)) && !touchesAnother(dispatcher, a) && !touchesAnother(dispatcher, b)) continue;
+    out.push_back(slip);
+  }
+  return out;
+}
+
+SlipTurn earliestSlipTurn(const std::vector<Slip>& slips, double g, double length, double share) {
+  SlipTurn earliest{length, nullptr, nullptr, btVector3(0, 0, 0), false};
+  for (const Slip& slip : slips) {
     const btManifoldPoint& point = *slip.point;
     const double before = slip.velocity.length();
     const btVector3 along = slip.velocity / before;

@@ -41,23 +41,28 @@ struct Slip {
 /// from it in the part: those whose friction may stop or turn it there.
 std::vector<Slip> slippingPoints(btDispatcher& dispatcher, double g, double length, double share);
 
+/// Of `slips`, those on contacts that `counts` and between bodies of which
+/// one carries or rides on another moving body: the slips a part may be
+/// cut at. A lone body's velocity stays from where its slip stops, which
+/// DynamicsWorld's slip share already places exactly; cut there, a
+/// standing cylinder was left rocking on its rim by the sweeps of the part
+/// after (0.016 degrees of turn at 30 Hz). Found before the solve, so a
+/// part with none is not saved to be solved again.
+std::vector<Slip> slipsThatMayTurn(btDispatcher& dispatcher, const std::vector<Slip>& slips,
+                                   const std::function<bool(const Slip&)>& counts);
+
 /// After a part's solve, the time from its start, s, at which the earliest
-/// slip of `slips` that ended the part turned round or stopped reached
-/// zero; `length` (the part's) if none did, or only within a hundredth of
-/// the part from either end. The slip's speed along its first direction
-/// went from a to b with the friction the solve found (b < 0: turned, the
-/// end's friction all through; b = 0: stopped, a share of it). Had kinetic
-/// friction mu N (N the contact's normal impulse) acted against the slip
-/// all through, b would be less by k (mu N - F), F the friction the solve
-/// used against it and k the slip's change per unit of friction impulse
-/// (the inverse masses, and the turning for a lone point). The time is
-/// where that line crosses zero: for a cube sliding to rest, a / (mu g).
-/// Only slips on contacts that `counts` and between bodies of which one
-/// carries or rides on another moving body count. A lone body's velocity
-/// stays from where its slip stops, which DynamicsWorld's slip share
-/// already places exactly; cut there, a standing cylinder was left rocking
-/// on its rim by the sweeps of the part after (0.016 degrees of turn at
-/// 30 Hz).
+/// slip of `slips` (slipsThatMayTurn's) that ended the part turned round or
+/// stopped reached zero; `length` (the part's) if none did, or only within
+/// a hundredth of the part from either end. The slip's speed along its
+/// first direction went from a to b with the friction the solve found
+/// (b < 0: turned, the end's friction all through; b = 0: stopped, a share
+/// of it). Had kinetic friction mu N (N the contact's normal impulse) acted
+/// against the slip all through, b would be less by k (mu N - F), F the
+/// friction the solve used against it and k the slip's change per unit of
+/// friction impulse (the inverse masses, and the turning for a lone point).
+/// The time is where that line crosses zero: for a cube sliding to rest,
+/// a / (mu g).
 struct SlipTurn {
   double time;                            // s from the part's start
   const btPersistentManifold* manifold;  // the contact it turned on (none: no turn)
@@ -65,9 +70,7 @@ struct SlipTurn {
   btVector3 along;                        // the slip's direction before, unit
   bool reversed;                          // it turned round (else it stopped)
 };
-SlipTurn earliestSlipTurn(btDispatcher& dispatcher, const std::vector<Slip>& slips,
-                          const std::function<bool(const Slip&)>& counts, double g, double length,
-                          double share);
+SlipTurn earliestSlipTurn(const std::vector<Slip>& slips, double g, double length, double share);
 
 /// What a part's solve changes, kept to solve the part again: each moving
 /// body's place and velocities, each contact point's impulses.
