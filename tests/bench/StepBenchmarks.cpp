@@ -16,7 +16,7 @@
 #include "sim/DivergenceGuard.h"
 #include "physics/World.h"
 #include "sim/SceneBuilder.h"
-#include "sim/ScriptRunner.h"
+#include "support/RunScene.h"
 
 namespace tabletop {
 namespace {
@@ -31,8 +31,7 @@ void runExample(benchmark::State& state, const char* name, SimulationMode mode) 
   const Scenario s = shipped(name);
   long steps = 0;
   for (auto _ : state) {
-    auto sim = buildSimulation(s, s.settings, mode);
-    const RunResult r = runScript(s, s.settings, *sim);
+    const RunResult r = test::runScene(s, mode);
     steps += r.steps;
     benchmark::DoNotOptimize(r.stateHash);
   }

@@ -6,8 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "sim/SceneBuilder.h"
-#include "sim/ScriptRunner.h"
+#include "support/RunScene.h"
 
 namespace tabletop {
 namespace {
@@ -34,8 +33,7 @@ TEST(CubeField, LaysOutNCubesAndPushesEveryOtherColumn) {
 // exactly kDuration / dt steps, and the first pushed cube has moved on.
 TEST(CubeField, RunsItsFixedDuration) {
   const Scenario s = CubeField::make(16);
-  auto sim = buildSimulation(s, s.settings, SimulationMode::Bullet);
-  const RunResult r = runScript(s, s.settings, *sim);
+  const RunResult r = test::runScene(s);
   EXPECT_TRUE(r.complete);
   EXPECT_EQ(r.steps, std::lround(CubeField::kDuration / s.settings.timestep));
   EXPECT_GT(r.entities[0].position.x - s.entities[0].position.x, 0.1);  // m

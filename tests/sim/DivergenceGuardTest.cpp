@@ -10,8 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "scenario/ScenarioLoader.h"
-#include "sim/SceneBuilder.h"
-#include "sim/ScriptRunner.h"
+#include "support/RunScene.h"
 
 namespace tabletop {
 namespace {
@@ -100,8 +99,7 @@ TEST(DivergenceGuard, AnAbsurdPushStopsTheRunIncomplete) {
       "entities": [{"name": "A", "shape": "cube", "size": 0.01, "position": [0, 0], "mass": 0.0001}],
       "script": [{"push": {"entity": "A", "direction": "Left", "impulse": 1e6}}]})",
                                               "absurd.json");
-  auto sim = buildSimulation(s, s.settings, SimulationMode::Bullet);
-  const RunResult r = runScript(s, s.settings, *sim);
+  const RunResult r = test::runScene(s);
   EXPECT_FALSE(r.complete);
   EXPECT_EQ(r.steps, 1);
   EXPECT_NE(r.failure.find("entity 'A': position"), std::string::npos) << r.failure;
@@ -116,8 +114,7 @@ TEST(DivergenceGuard, ShippedScenariosNeverTripIt) {
     const Scenario s =
         ScenarioLoader::loadFile(std::string(TABLETOP_SOURCE_DIR) + "/scenarios/" + name + ".json");
     for (SimulationMode mode : kAllModes) {
-      auto sim = buildSimulation(s, s.settings, mode);
-      const RunResult r = runScript(s, s.settings, *sim);
+      const RunResult r = test::runScene(s, mode);
       EXPECT_TRUE(r.complete) << name << " " << toString(mode) << ": " << r.failure;
     }
   }

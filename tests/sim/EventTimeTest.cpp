@@ -21,8 +21,7 @@
 #include "core/Simulation.h"
 #include "scenario/ScenarioLoader.h"
 #include "scenes/LawScenes.h"
-#include "sim/SceneBuilder.h"
-#include "sim/ScriptRunner.h"
+#include "support/RunScene.h"
 
 namespace tabletop {
 namespace {
@@ -46,8 +45,7 @@ TEST(EventTime, LeavingTheTableIsPlacedInsideTheStep) {
             "script": [{"push": {"entity": "A", "direction": ")" + edge.direction + R"(", "impulse": )" +
                                  std::to_string(v0) + "}}]}";
         const Scenario s = ScenarioLoader::loadText(text, "edge.json");
-        auto sim = buildSimulation(s, s.settings, SimulationMode::Bullet);
-        const RunResult r = runScript(s, s.settings, *sim);
+        const RunResult r = test::runScene(s);
         bool seen = false;
         for (const Event& e : r.events) {
           if (e.type != EventType::LeavesTable) continue;
@@ -69,8 +67,7 @@ TEST(EventTime, ALandingIsPlacedInsideTheStep) {
       for (const double rate : {30.0, 60.0, 240.0, 1000.0}) {
         const DropCase c{shape.shape, shape.size, shape.below, support, 0.0, rate};
         const Scenario s = dropScene(c);
-        auto sim = buildSimulation(s, s.settings, SimulationMode::Bullet);
-        const RunResult r = runScript(s, s.settings, *sim);
+        const RunResult r = test::runScene(s);
         bool seen = false;
         for (const Event& e : r.events) {
           if (e.type != EventType::Lands || e.entity != "A" || seen) continue;
@@ -111,8 +108,7 @@ TEST(EventTime, ABallLeavesTheEdgeWhenItsCentrePasses) {
                 "script": [{"push": {"entity": "A", "direction": ")" + edge.direction + R"(", "impulse": )" +
                                      std::to_string(v) + "}}]}";
             const Scenario s = ScenarioLoader::loadText(text, "ball.json");
-            auto sim = buildSimulation(s, s.settings, SimulationMode::Bullet);
-            const RunResult run = runScript(s, s.settings, *sim);
+            const RunResult run = test::runScene(s);
             const double flight = run.simTime - d / v;  // s since the centre passed the edge
             ASSERT_GT(flight, 0.15);
             const Vec3& p = run.entities.at(0).position;
@@ -139,8 +135,7 @@ TEST(EventTime, ABallJustInsideTheEdgeStays) {
         "table": {"size": [1.2, 0.8]},
         "entities": [{"name": "A", "shape": "sphere", "size": 0.05, "mass": 1.0, "position": [0.5995, 0.0], "on": "table"}]})";
     const Scenario s = ScenarioLoader::loadText(text, "ball.json");
-    auto sim = buildSimulation(s, s.settings, SimulationMode::Bullet);
-    const RunResult run = runScript(s, s.settings, *sim);
+    const RunResult run = test::runScene(s);
     EXPECT_NEAR(run.entities.at(0).position.x, 0.5995, 1e-6) << rate << " Hz";
     EXPECT_NEAR(run.entities.at(0).position.y, s.table.height + 0.05, 1e-6) << rate << " Hz";
   }

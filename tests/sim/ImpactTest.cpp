@@ -18,8 +18,7 @@
 
 #include "core/Simulation.h"
 #include "scenario/ScenarioLoader.h"
-#include "sim/SceneBuilder.h"
-#include "sim/ScriptRunner.h"
+#include "support/RunScene.h"
 
 namespace tabletop {
 namespace {
@@ -73,8 +72,7 @@ void check(const Pair& p, double rate, double speedTolerance = 1e-6, bool weight
                            number(p.massB) + R"(, "position": )" + place(b0) +
                            R"(, "material": {"friction": 0, "restitution": 1}}]})";
   const Scenario s = ScenarioLoader::loadText(text, "impact.json");
-  auto sim = buildSimulation(s, s.settings, SimulationMode::Bullet);
-  const RunResult run = runScript(s, s.settings, *sim);
+  const RunResult run = test::runScene(s);
   const std::string what = describe(p, rate) + (weightless ? ", weightless" : "");
   ASSERT_NEAR(run.simTime, T, 1e-9) << what;
 

@@ -15,16 +15,10 @@
 #include "scenario/ScenarioError.h"
 #include "scenario/ScenarioLoader.h"
 #include "sim/ModeComparison.h"
-#include "sim/SceneBuilder.h"
-#include "sim/ScriptRunner.h"
+#include "support/RunScene.h"
 
 namespace tabletop {
 namespace {
-
-RunResult runIn(const Scenario& s, SimulationMode mode) {
-  auto sim = buildSimulation(s, s.settings, mode);
-  return runScript(s, s.settings, *sim);
-}
 
 std::vector<std::string> dropOrder(const RunResult& r) {
   std::vector<std::string> order;
@@ -51,7 +45,7 @@ class ScenarioFiles : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(ScenarioFiles, CompatAgreesWithTheRules) {
   const Scenario s = ScenarioLoader::loadFile(std::string(TABLETOP_SOURCE_DIR) + "/scenarios/" + GetParam());
-  expectAgreement(runIn(s, SimulationMode::Rules), runIn(s, SimulationMode::Compat), GetParam());
+  expectAgreement(test::runScene(s, SimulationMode::Rules), test::runScene(s, SimulationMode::Compat), GetParam());
 }
 
 INSTANTIATE_TEST_SUITE_P(Project, ScenarioFiles,
@@ -161,15 +155,15 @@ TEST(ModeAgreement, CompatAgreesWithTheRulesOn200RandomScenes) {
     const Scenario s = RandomScene(seed).make();
     RunResult rules;
     try {
-      rules = runIn(s, SimulationMode::Rules);
+      rules = test::runScene(s, SimulationMode::Rules);
     } catch (const ScenarioError&) {
       // A later push named an entity the rules had already dropped: both
       // modes refuse it (checked here), and the scene does not count.
-      EXPECT_THROW(runIn(s, SimulationMode::Compat), ScenarioError) << s.file;
+      EXPECT_THROW(test::runScene(s, SimulationMode::Compat), ScenarioError) << s.file;
       ++refused;
       continue;
     }
-    expectAgreement(rules, runIn(s, SimulationMode::Compat), s.name);
+    expectAgreement(rules, test::runScene(s, SimulationMode::Compat), s.name);
     if (::testing::Test::HasFailure()) {
       FAIL() << "first disagreement: " << describeScene(s);
     }

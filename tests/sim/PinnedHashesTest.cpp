@@ -18,8 +18,7 @@
 
 #include "core/StateHash.h"
 #include "scenario/ScenarioLoader.h"
-#include "sim/SceneBuilder.h"
-#include "sim/ScriptRunner.h"
+#include "support/RunScene.h"
 
 namespace tabletop {
 namespace {
@@ -41,8 +40,7 @@ TEST_P(PinnedHash, IsUnchanged) {
   const Pinned& p = GetParam();
   const Scenario s =
       ScenarioLoader::loadFile(std::string(TABLETOP_SOURCE_DIR) + "/scenarios/" + p.scenario + ".json");
-  auto sim = buildSimulation(s, s.settings, p.mode);
-  const RunResult r = runScript(s, s.settings, *sim);
+  const RunResult r = test::runScene(s, p.mode);
   EXPECT_EQ(formatHash(r.stateHash), p.hash)
       << p.scenario << " in mode " << toString(p.mode)
       << ": the outcome changed. If the physics change was intended, update the golden value in "

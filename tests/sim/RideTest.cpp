@@ -23,8 +23,7 @@
 
 #include "core/Simulation.h"
 #include "scenes/LawScenes.h"
-#include "sim/SceneBuilder.h"
-#include "sim/ScriptRunner.h"
+#include "support/RunScene.h"
 
 namespace tabletop {
 namespace {
@@ -52,8 +51,7 @@ Travel closedForm(const RideCase& c) {
 
 Travel simulate(const RideCase& c) {
   const Scenario s = rideScene(c);
-  auto sim = buildSimulation(s, s.settings, SimulationMode::Bullet);
-  const RunResult r = runScript(s, s.settings, *sim);
+  const RunResult r = test::runScene(s);
   EXPECT_TRUE(r.complete) << describe(c);
   const auto travel = [&](std::size_t i) {
     const EntitySpec& e = s.entities[i];

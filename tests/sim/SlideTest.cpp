@@ -16,8 +16,7 @@
 
 #include "core/Simulation.h"
 #include "scenes/LawScenes.h"
-#include "sim/SceneBuilder.h"
-#include "sim/ScriptRunner.h"
+#include "support/RunScene.h"
 
 namespace tabletop {
 namespace {
@@ -45,8 +44,7 @@ struct Outcome {
 // The pushed entity's scene (scenes/LawScenes.h), run to its end.
 Outcome slide(const PushCase& c) {
   const Scenario s = pushScene(c);
-  auto sim = buildSimulation(s, s.settings, SimulationMode::Bullet);
-  const RunResult r = runScript(s, s.settings, *sim);
+  const RunResult r = test::runScene(s);
   EXPECT_TRUE(r.complete) << describe(c);
   const EntityState& a = r.entities.back();
   const auto [x0, z0] = pushStart(c);
