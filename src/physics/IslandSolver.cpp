@@ -140,6 +140,14 @@ bool IslandSolver::solveMLCP(const btContactSolverInfo& info) {
   return true;
 }
 
+btScalar IslandSolver::solveGroup(btCollisionObject** bodies, int numBodies, btPersistentManifold** manifolds,
+                                  int numManifolds, btTypedConstraint** constraints, int numConstraints,
+                                  const btContactSolverInfo& info, btIDebugDraw* debugDrawer, btDispatcher* dispatcher) {
+  if (numBodies == 0) return 0;
+  return btMLCPSolver::solveGroup(bodies, numBodies, manifolds, numManifolds, constraints, numConstraints, info,
+                                  debugDrawer, dispatcher);
+}
+
 btScalar IslandSolver::solveGroupCacheFriendlySetup(btCollisionObject** bodies, int numBodies,
                                                     btPersistentManifold** manifolds, int numManifolds,
                                                     btTypedConstraint** constraints, int numConstraints,

@@ -88,6 +88,15 @@ class IslandSolver : public btMLCPSolver {
 
   bool solveMLCP(const btContactSolverInfo& info) override;
 
+ public:
+  /// Solves one island; a group with no body is skipped. Bullet ends every
+  /// island pass with a call for the islands it batched, and with batches
+  /// of one there are none: that empty call cost a body in free flight a
+  /// tenth of its step.
+  btScalar solveGroup(btCollisionObject** bodies, int numBodies, btPersistentManifold** manifolds, int numManifolds,
+                      btTypedConstraint** constraints, int numConstraints, const btContactSolverInfo& info,
+                      btIDebugDraw* debugDrawer, btDispatcher* dispatcher) override;
+
  private:
   // How an island is solved: swept (`iterations`), pivoted, or swept long.
   enum class Way { Sweep, Pivot, LongSweeps };
