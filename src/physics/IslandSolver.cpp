@@ -95,9 +95,18 @@ void IslandSolver::dropSlidingCrossFriction(double timeStep) {
   }
 }
 
+bool IslandSolver::solveWholeIsland(const btContactSolverInfo& info) {
+  if (m_solver->solveMLCP(m_A, m_b, m_x, m_lo, m_hi, m_limitDependencies, info.m_numIterations)) return true;
+  btMatrixXu& raised = raised_;
+  raised = m_A;
+  for (int i = 0; i < raised.rows(); ++i) raised.setElem(i, i, raised(i, i) * (1.0 + kRetryRaise));
+  m_x.setZero();
+  return m_solver->solveMLCP(raised, m_b, m_x, m_lo, m_hi, m_limitDependencies, info.m_numIterations);
+}
+
 bool IslandSolver::solveMLCP(const btContactSolverInfo& info) {
   if (m_A.rows() == 0) return true;
-  if (!info.m_splitImpulse) return btMLCPSolver::solveMLCP(info);
+  if (!info.m_splitImpulse) return solveWholeIsland(info);
   // The normal rows: those whose limits hang on no other row (a friction
   // row's hang on its normal's). Kept in members: this runs every step of
   // every pivoted island.
@@ -122,7 +131,7 @@ bool IslandSolver::solveMLCP(const btContactSolverInfo& info) {
     lo[r] = m_lo[normals[r]];
     hi[r] = m_hi[normals[r]];
   }
-  if (!m_solver->solveMLCP(m_A, m_b, m_x, m_lo, m_hi, m_limitDependencies, info.m_numIterations)) return false;
+  if (!solveWholeIsland(info)) return false;
   // The push out of penetration along the normals alone, solved on their
   // rows only: friction rows pushing sideways would move bodies no force
   // moved, and held at zero they made the pivoting fail (a 1.4 kg cube
