@@ -281,14 +281,16 @@ void DynamicsWorld::solveConstraints(btContactSolverInfo& solverInfo) {
   }
   // A part in which a slip turns round or stops is cut there and solved
   // again (SlipEvents.h), once: the next part takes what is left.
-  const std::vector<btManifoldPoint*> alongTurn = holdFrictionAlongTurn();
+  const std::vector<btManifoldPoint*> alongLine = holdFrictionAlongLine();
   const SlipTurn turned =
       solvePart(solverInfo, scan, mayCut_ && secondOrder_ ? PartSolve::kMayCutAtSlip : PartSolve::kWhole);
-  for (btManifoldPoint* point : alongTurn) point->m_contactPointFlags &= ~BT_CONTACT_FLAG_LATERAL_FRICTION_INITIALIZED;
-  lastTurn_.reset();
+  for (btManifoldPoint* point : alongLine) {
+    point->m_contactPointFlags &= ~(BT_CONTACT_FLAG_LATERAL_FRICTION_INITIALIZED | kFirstFrictionRowOnly);
+  }
+  lastSlipEnd_.reset();
   if (!turned.manifold) return;
   solvePart(solverInfo, scan, PartSolve::kAfterSlipCut);
-  if (turned.reversed) lastTurn_ = std::make_pair(contactOf(*turned.manifold), turned.along);
+  lastSlipEnd_ = SlipEnd{contactOf(*turned.manifold), turned.along, turned.reversed};
   // A slip that ends the part at zero does not slide into the next one,
   // where a slip made at its start (by rolling resistance) is no stop; one
   // left short of zero (the time is estimated) is cut again there.

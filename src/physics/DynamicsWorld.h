@@ -90,7 +90,7 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   // round (SlipEvents.h); or again, after such a cut.
   enum class PartSolve { kWhole, kMayCutAtSlip, kAfterSlipCut };
   SlipTurn solvePart(btContactSolverInfo& solverInfo, const ImpactScan& scan, PartSolve how);
-  std::vector<btManifoldPoint*> holdFrictionAlongTurn();
+  std::vector<btManifoldPoint*> holdFrictionAlongLine();
   void findSlipStops(const std::vector<Slip>& slipping);
   // Slips slower than this share of what kinetic friction removes in a
   // part are taken as stuck; friction this close to its limit as sliding.
@@ -128,7 +128,14 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   std::vector<btVector3> startVelocities_;
   CarriedImpulses carried_;  // per non-static body, at the step's start
   PartStart partStart_;      // the part's start, while a slip may turn in it
-  std::optional<std::pair<ContactKey, btVector3>> lastTurn_;  // the contact whose slip turned round, and its line
+  // The contact whose slip turned round or stopped where the last part was
+  // cut, the line it slid on, and whether it turned round.
+  struct SlipEnd {
+    ContactKey contact;
+    btVector3 along;
+    bool reversed;
+  };
+  std::optional<SlipEnd> lastSlipEnd_;
   std::vector<std::pair<btRigidBody*, btVector3>> resisted_;  // the part's rolling-resistance impulses, N m s
   ContactIslands islands_;   // replaces the island manager Bullet made
 };

@@ -9,6 +9,7 @@
 
 #include "physics/Impacts.h"
 #include "physics/ShapeKinds.h"
+#include "physics/SlipEvents.h"
 
 namespace tabletop {
 namespace {
@@ -85,7 +86,7 @@ void IslandSolver::dropSlidingCrossFriction(double timeStep) {
     // side is the slip speed times the row's effective mass), or along the
     // line a slip that just turned round slides on (DynamicsWorld).
     const auto* point = static_cast<const btManifoldPoint*>(m_tmpSolverContactConstraintPool[c].m_originalContactPoint);
-    const bool turned = point && (point->m_contactPointFlags & BT_CONTACT_FLAG_LATERAL_FRICTION_INITIALIZED);
+    const bool turned = point && (point->m_contactPointFlags & kFirstFrictionRowOnly);
     const double slip = std::abs(along.m_rhs / along.m_jacDiagABInv);
     if (!turned && slip <= along.m_friction * gravity_ * timeStep) continue;
     btSolverConstraint& across = m_tmpSolverContactFrictionConstraintPool[first + 1];

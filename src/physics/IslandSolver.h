@@ -30,8 +30,8 @@ namespace tabletop {
 /// 1.26 times the instructions). Nor does a frictionless one, which has no
 /// friction to shift the load (a cube gliding off a frictionless table:
 /// 13% fewer instructions, its tip 0.010 mm from the edge at 60 Hz instead
-/// of 0.007). An island the pivoting
-/// fails on is swept (Bullet's own fallback). The push out of penetration
+/// of 0.007). An island the pivoting fails on twice (kRetryRaise)
+/// is swept (Bullet's own fallback). The push out of penetration
 /// (split impulse) is pivoted on the normal rows alone; should that fail,
 /// the step keeps its exact velocities and pushes nothing out.
 ///
