@@ -31,11 +31,13 @@ double featureApart2(const btManifoldPoint& p, const btVector3& localA, const bt
 }
 
 // The kept point of `manifold` nearest `point` and within `radius` of it,
-// on the moving body, or -1.
-int keptPointWithin(const btPersistentManifold& manifold, const btManifoldPoint& point, double radius) {
+// on the moving body, or -1; none that `taken` says was found in this pass.
+int keptPointWithin(const btPersistentManifold& manifold, const btManifoldPoint& point, double radius,
+                    const std::function<bool(int)>& taken) {
   int nearest = -1;
   double nearestSquared = radius * radius;
   for (int p = 0; p < manifold.getNumContacts(); ++p) {
+    if (taken(p)) continue;
     const double squared = featureApart2(manifold.getContactPoint(p), point.m_localPointA, point.m_localPointB);
     if (squared < nearestSquared) {
       nearestSquared = squared;
@@ -128,13 +130,19 @@ void ContactResult::addContactPoint(const btVector3& foundNormal, const btVector
   point.m_index0 = swapped ? m_index1 : m_index0;
   point.m_index1 = swapped ? m_index0 : m_index1;
 
+  const auto taken = [&](int index) {
+    const std::pair<const btPersistentManifold*, int> key(&manifold, index);
+    return distinct_ && std::find(found_.begin(), found_.end(), key) != found_.end();
+  };
   const int kept = keptPointWithin(
       manifold, point,
-      mergeRadius(*a.getCollisionShape(), *b.getCollisionShape(), manifold.getContactBreakingThreshold()));
+      mergeRadius(*a.getCollisionShape(), *b.getCollisionShape(), manifold.getContactBreakingThreshold()), taken);
   if (kept >= 0) {
     manifold.replaceContactPoint(point, kept);
+    if (distinct_) found_.emplace_back(&manifold, kept);
   } else {
-    manifold.addManifoldPoint(point);
+    const int added = manifold.addManifoldPoint(point);
+    if (distinct_ && !taken(added)) found_.emplace_back(&manifold, added);
   }
 }
 

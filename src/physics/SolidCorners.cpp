@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "physics/ContactResult.h"
+
 namespace tabletop {
 namespace {
 
@@ -48,6 +50,8 @@ std::vector<NearCorner> nearCorners(const btConvexShape& solid, const btTransfor
 
 void addCornerPoints(btManifoldResult& result, const std::vector<NearCorner>& chosen, const btVector3& normal,
                      bool supportFirst) {
+  auto* distinct = dynamic_cast<ContactResult*>(&result);
+  if (distinct) distinct->setEachPointDistinct(true);
   for (const auto& [corner, distance, vertex] : chosen) {
     if (supportFirst) {
       result.addContactPoint(-normal, vertex, distance);
@@ -55,6 +59,7 @@ void addCornerPoints(btManifoldResult& result, const std::vector<NearCorner>& ch
       result.addContactPoint(normal, vertex - normal * distance, distance);
     }
   }
+  if (distinct) distinct->setEachPointDistinct(false);
 }
 
 std::vector<NearCorner> CornerChoice::choose(const btConvexShape& solid, std::vector<NearCorner> near) {
