@@ -31,7 +31,7 @@ double featureApart2(const btManifoldPoint& p, const btVector3& localA, const bt
 }
 
 // The kept point of `manifold` nearest `point` and within `radius` of it,
-// on the moving body, or -1; none that `taken` excludes.
+// on the moving body, or -1; none that `taken` says was found in this pass.
 int keptPointWithin(const btPersistentManifold& manifold, const btManifoldPoint& point, double radius,
                     const std::function<bool(int)>& taken) {
   int nearest = -1;
@@ -130,21 +130,19 @@ void ContactResult::addContactPoint(const btVector3& foundNormal, const btVector
   point.m_index0 = swapped ? m_index1 : m_index0;
   point.m_index1 = swapped ? m_index0 : m_index1;
 
-  const auto foundNow = [&](int index) {
+  const auto taken = [&](int index) {
     const std::pair<const btPersistentManifold*, int> key(&manifold, index);
-    return std::find(found_.begin(), found_.end(), key) != found_.end();
+    return distinct_ && std::find(found_.begin(), found_.end(), key) != found_.end();
   };
-  const auto taken = [&](int index) { return distinct_ && foundNow(index); };
   const int kept = keptPointWithin(
       manifold, point,
       mergeRadius(*a.getCollisionShape(), *b.getCollisionShape(), manifold.getContactBreakingThreshold()), taken);
   if (kept >= 0) {
-    if (foundNow(kept) && !(depth < manifold.getContactPoint(kept).getDistance())) return;
     manifold.replaceContactPoint(point, kept);
-    if (!foundNow(kept)) found_.emplace_back(&manifold, kept);
+    if (distinct_) found_.emplace_back(&manifold, kept);
   } else {
     const int added = manifold.addManifoldPoint(point);
-    if (!foundNow(added)) found_.emplace_back(&manifold, added);
+    if (distinct_ && !taken(added)) found_.emplace_back(&manifold, added);
   }
 }
 

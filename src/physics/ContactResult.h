@@ -36,22 +36,22 @@ class ContactResult : public btManifoldResult {
   /// more than `breakingThreshold`.
   static double mergeRadius(const btCollisionShape& a, const btCollisionShape& b, double breakingThreshold);
 
-  /// The points added in one pass (one narrow phase of the pair) merge by
-  /// depth: one within the merge radius of a point added earlier in the
-  /// pass replaces it only if it is deeper. Bullet's algorithms find
-  /// several points at once (a box's clipped face), and with Bullet's rule
-  /// the last found, not the deepest, stood for them all: a 3.5 kg cube
-  /// riding a 57 g box sank unseen and rose again, 0.15% of its scene's
-  /// energy gained. While `setEachPointDistinct` is on, each point added
-  /// stays a point of its own instead (SolidCorners' chosen corners, each
-  /// one the solid rests on): the narrow end of a cone lying on its side is
-  /// a ring narrower than the merge radius, its corners stood for each
-  /// other, and the end sank 5.6 mm into the table (0.2% gained).
-  void setEachPointDistinct(bool on) { distinct_ = on; }
+  /// While on, each point added is a point of its own: it replaces a kept
+  /// point within the merge radius only if no other point added since did
+  /// (SolidCorners' chosen corners, each one the solid rests on). The narrow
+  /// end of a cone lying on its side is a ring narrower than the merge
+  /// radius, and its corners replaced each other, the last one added, not
+  /// the deepest, staying: the end sank 5.6 mm into the table unseen, and
+  /// rose when a later choice found it (0.2% of a scene's energy gained).
+  /// Bullet's own algorithms add points that are meant to merge.
+  void setEachPointDistinct(bool on) {
+    distinct_ = on;
+    found_.clear();
+  }
 
  private:
   bool distinct_ = false;
-  std::vector<std::pair<const btPersistentManifold*, int>> found_;  // added in this pass, by manifold and index
+  std::vector<std::pair<const btPersistentManifold*, int>> found_;  // added while distinct, by index
 };
 
 /// Carries warm-start impulses over Bullet's compound algorithm, which
