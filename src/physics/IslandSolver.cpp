@@ -98,11 +98,10 @@ void IslandSolver::dropSlidingCrossFriction(double timeStep) {
 
 bool IslandSolver::solveWholeIsland(const btContactSolverInfo& info) {
   if (m_solver->solveMLCP(m_A, m_b, m_x, m_lo, m_hi, m_limitDependencies, info.m_numIterations)) return true;
-  btMatrixXu& raised = raised_;
-  raised = m_A;
-  for (int i = 0; i < raised.rows(); ++i) raised.setElem(i, i, raised(i, i) * (1.0 + kRetryRaise));
+  raised_ = m_A;
+  for (int i = 0; i < raised_.rows(); ++i) raised_.setElem(i, i, raised_(i, i) * (1.0 + kRetryRaise));
   m_x.setZero();
-  return m_solver->solveMLCP(raised, m_b, m_x, m_lo, m_hi, m_limitDependencies, info.m_numIterations);
+  return m_solver->solveMLCP(raised_, m_b, m_x, m_lo, m_hi, m_limitDependencies, info.m_numIterations);
 }
 
 bool IslandSolver::solveMLCP(const btContactSolverInfo& info) {

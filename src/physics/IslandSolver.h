@@ -48,6 +48,14 @@ class IslandSolver : public btMLCPSolver {
  public:
   IslandSolver(ContactSolver choice, int rowLimit, double gravity);
 
+  /// Solves one island; a group with no body is skipped. Bullet ends every
+  /// island pass with a call for the islands it batched, and with batches
+  /// of one there are none: that empty call cost a body in free flight a
+  /// tenth of its step.
+  btScalar solveGroup(btCollisionObject** bodies, int numBodies, btPersistentManifold** manifolds, int numManifolds,
+                      btTypedConstraint** constraints, int numConstraints, const btContactSolverInfo& info,
+                      btIDebugDraw* debugDrawer, btDispatcher* dispatcher) override;
+
   /// How the islands were solved since the solver was made.
   const SolverUse& use() const { return use_; }
   /// While on, every group is swept and none is counted (the impacts'
@@ -95,15 +103,6 @@ class IslandSolver : public btMLCPSolver {
                                              const btContactSolverInfo& info, btIDebugDraw* debugDrawer) override;
 
   bool solveMLCP(const btContactSolverInfo& info) override;
-
- public:
-  /// Solves one island; a group with no body is skipped. Bullet ends every
-  /// island pass with a call for the islands it batched, and with batches
-  /// of one there are none: that empty call cost a body in free flight a
-  /// tenth of its step.
-  btScalar solveGroup(btCollisionObject** bodies, int numBodies, btPersistentManifold** manifolds, int numManifolds,
-                      btTypedConstraint** constraints, int numConstraints, const btContactSolverInfo& info,
-                      btIDebugDraw* debugDrawer, btDispatcher* dispatcher) override;
 
  private:
   // How an island is solved: swept (`iterations`), pivoted, or swept long.
