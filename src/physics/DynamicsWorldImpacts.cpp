@@ -6,6 +6,7 @@
 
 #include "physics/Impacts.h"
 #include "physics/IslandSolver.h"
+#include "physics/PointFlags.h"
 
 // The impacts of a part, resolved at its start (DynamicsWorld).
 namespace tabletop {
@@ -197,14 +198,6 @@ void DynamicsWorld::resolveTouchingImpacts(btContactSolverInfo& solverInfo) {
     startVelocities_[static_cast<std::size_t>(i)] = m_nonStaticRigidBodies[i]->getLinearVelocity();
   }
 }
-
-namespace {
-
-// A bit of btManifoldPoint::m_contactPointFlags that Bullet's own flags
-// (1 to 16) leave free: the point is an impact in this step.
-constexpr int kImpactFlag = 1 << 20;
-
-}  // namespace
 
 // Marks the points whose bodies close along the normal faster than smooth
 // forces could make them in one step.

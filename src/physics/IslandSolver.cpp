@@ -9,7 +9,7 @@
 
 #include "physics/Impacts.h"
 #include "physics/ShapeKinds.h"
-#include "physics/SlipEvents.h"
+#include "physics/PointFlags.h"
 
 namespace tabletop {
 namespace {

@@ -7,6 +7,8 @@
 
 #include <btBulletDynamicsCommon.h>
 
+#include "physics/PointFlags.h"
+
 namespace tabletop {
 
 /// Slips that turn round, or stop, inside a part of a step. Kinetic friction is
@@ -28,12 +30,6 @@ namespace tabletop {
 using ContactKey = std::pair<const btCollisionObject*, const btCollisionObject*>;
 inline ContactKey contactOf(const btPersistentManifold& manifold) { return {manifold.getBody0(), manifold.getBody1()}; }
 using SlidingContacts = std::set<ContactKey>;
-
-/// A bit of btManifoldPoint::m_contactPointFlags that Bullet's own flags
-/// (1 to 16) leave free: the point's friction has its first row only, along
-/// the line its contact's slip turned round on (IslandSolver drops the
-/// second).
-inline constexpr int kFirstFrictionRowOnly = 1 << 21;
 
 /// A point whose bodies slide over each other at a part's start.
 struct Slip {
