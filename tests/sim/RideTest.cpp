@@ -108,13 +108,15 @@ TEST(Ride, ABodyElsewhereRestsThroughASlipCut) {
       // between the cube and its rider (islands of bodies not listed one
       // after the other are the ones a second pass scrambled), one after.
       const EntitySpec cube = s.entities.at(0);
-      for (const double dz : {0.5, -0.5, 1.0}) {
+      const auto restingAt = [&](double dz, std::size_t index) {
         EntitySpec resting = cube;
-        resting.name = "C" + std::to_string(s.entities.size());
+        resting.name = "C" + std::to_string(index);
         resting.position.z += dz;
-        const auto at = dz < 0 ? s.entities.begin() : dz < 0.7 ? s.entities.end() - 1 : s.entities.end();
-        s.entities.insert(at, resting);
-      }
+        s.entities.insert(s.entities.begin() + static_cast<std::ptrdiff_t>(index), resting);
+      };
+      restingAt(0.5, 1);   // between the cube and its rider
+      restingAt(-0.5, 0);  // before them
+      restingAt(1.0, 4);   // after them
       auto sim = buildSimulation(s, s.settings, SimulationMode::Bullet);
       const double rest = dropTouchHeight(DropCase{"cube", "0.2", 0.5 * c.sizeA, support});  // m, its centre at rest
       double lowest = rest, highest = rest;
