@@ -33,7 +33,7 @@ bool uncoupled(const btPersistentManifold& manifold) {
 }  // namespace
 
 IslandSolver::IslandSolver(ContactSolver choice, int rowLimit, double gravity)
-    : btMLCPSolver(&dantzig_), choice_(choice), rowLimit_(rowLimit), gravity_(std::abs(gravity)) {}
+    : btMLCPSolver(&activeSet_), choice_(choice), rowLimit_(rowLimit), gravity_(std::abs(gravity)) {}
 
 IslandSolver::Way IslandSolver::chooseWay(btPersistentManifold** manifolds, int numManifolds,
                                          int numConstraints) const {
@@ -101,7 +101,7 @@ bool IslandSolver::solveWholeIsland(const btContactSolverInfo& info) {
   raised_ = m_A;
   for (int i = 0; i < raised_.rows(); ++i) raised_.setElem(i, i, raised_(i, i) * (1.0 + kRetryRaise));
   m_x.setZero();
-  return m_solver->solveMLCP(raised_, m_b, m_x, m_lo, m_hi, m_limitDependencies, info.m_numIterations);
+  return dantzig_.solveMLCP(raised_, m_b, m_x, m_lo, m_hi, m_limitDependencies, info.m_numIterations);
 }
 
 bool IslandSolver::solveMLCP(const btContactSolverInfo& info) {
@@ -147,6 +147,55 @@ bool IslandSolver::solveMLCP(const btContactSolverInfo& info) {
     for (int r = 0; r < n; ++r) m_xSplit[normals[r]] = x[r];
   }
   return true;
+}
+
+void IslandSolver::createMLCPFast(const btContactSolverInfo& info) {
+  const int n = m_allConstraintPtrArray.size();
+  m_b.resize(n), m_bSplit.resize(n), m_lo.resize(n), m_hi.resize(n), m_x.resize(n), m_xSplit.resize(n);
+  const bool warm = (info.m_solverMode & SOLVER_USE_WARMSTARTING) != 0;
+  const auto numBodies = static_cast<std::size_t>(m_tmpSolverBodyPool.size());
+  if (bodyRows_.size() < numBodies) bodyRows_.resize(numBodies);
+  for (std::size_t s = 0; s < numBodies; ++s) bodyRows_[s].clear();
+  const auto addSide = [this](int row, int solverBody, const btVector3& normal, const btVector3& lever) {
+    const btRigidBody* body = m_tmpSolverBodyPool[solverBody].m_originalBody;
+    if (body == nullptr) return;  // the fixed body
+    const btVector3 linear = normal * body->getInvMass();
+    const btVector3 angular = lever * body->getInvInertiaTensorWorld();
+    BodyRow side{row, {}, {}};
+    for (int r = 0; r < 3; ++r) {
+      side.j[r] = normal[r], side.j[r + 3] = lever[r];
+      side.mj[r] = linear[r], side.mj[r + 3] = angular[r];
+    }
+    bodyRows_[static_cast<std::size_t>(solverBody)].push_back(side);
+  };
+  for (int i = 0; i < n; ++i) {
+    const btSolverConstraint& c = *m_allConstraintPtrArray[i];
+    const bool none = btFuzzyZero(c.m_jacDiagABInv);
+    m_b[i] = none ? 0 : c.m_rhs / c.m_jacDiagABInv;
+    m_bSplit[i] = none ? 0 : c.m_rhsPenetration / c.m_jacDiagABInv;
+    m_lo[i] = c.m_lowerLimit;
+    m_hi[i] = c.m_upperLimit;
+    m_x[i] = warm ? c.m_appliedImpulse : 0;
+    m_xSplit[i] = warm ? c.m_appliedPushImpulse : 0;
+    addSide(i, c.m_solverBodyIdA, c.m_contactNormal1, c.m_relpos1CrossNormal);
+    addSide(i, c.m_solverBodyIdB, c.m_contactNormal2, c.m_relpos2CrossNormal);
+  }
+  m_A.resize(n, n);
+  double* a = m_A.getBufferPointerWritable();
+  if (a == nullptr) return;
+  std::fill(a, a + static_cast<std::size_t>(n) * n, 0.0);
+  for (std::size_t s = 0; s < numBodies; ++s) {
+    const std::vector<BodyRow>& rows = bodyRows_[s];
+    for (std::size_t p = 0; p < rows.size(); ++p) {
+      for (std::size_t q = 0; q <= p; ++q) {
+        double v = 0;
+        for (int k = 0; k < 6; ++k) v += rows[p].mj[k] * rows[q].j[k];
+        a[static_cast<std::size_t>(rows[p].row) * n + rows[q].row] += v;
+        if (q != p) a[static_cast<std::size_t>(rows[q].row) * n + rows[p].row] += v;
+      }
+    }
+  }
+  for (int i = 0; i < n; ++i) a[static_cast<std::size_t>(i) * n + i] += info.m_globalCfm / info.m_timeStep;
 }
 
 btScalar IslandSolver::solveGroup(btCollisionObject** bodies, int numBodies, btPersistentManifold** manifolds,

@@ -78,7 +78,7 @@ TEST(RandomScene, FirstSceneIsPinned) {
 //    contacts' penetration, taken out by split impulse, lifts bodies a
 //    little;
 //  - never gain more than 1.5% over its lowest energy since the last push
-//    (measured 0.27% at most at the default rate, seed 8594; 0.91% at
+//    (measured 0.26% at most at the default rate, seed 1296; 0.91% at
 //    60 Hz, seed 1495): the same lift counted from the moment a body had
 //    sunk deepest into what it landed on.
 // Failing seeds are listed in the failure message.

@@ -1,0 +1,189 @@
+#include "physics/ActiveSetSolver.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+namespace tabletop {
+namespace {
+
+// Bullet bounds a contact's normal row by 0 and 1e10.
+constexpr double kUnbounded = 1e9;
+
+}  // namespace
+
+bool ActiveSetSolver::solveMLCP(const btMatrixXu& A, const btVectorXu& b, btVectorXu& x, const btVectorXu& lo,
+                                const btVectorXu& hi, const btAlignedObjectArray<int>& limitDependency,
+                                int numIterations, bool useSparsity) {
+  if (b.rows() > 0) {
+    if (solveByGuess(A, b, lo, hi, limitDependency, x)) {
+      ++solved_;
+      return true;
+    }
+    ++handedOn_;
+  }
+  return fallback_.solveMLCP(A, b, x, lo, hi, limitDependency, numIterations, useSparsity);
+}
+
+bool ActiveSetSolver::solveByGuess(const btMatrixXu& A, const btVectorXu& b, const btVectorXu& lo,
+                                   const btVectorXu& hi, const btAlignedObjectArray<int>& limitDependency,
+                                   btVectorXu& x) {
+  const int n = b.rows();
+  if (A.rows() != n || A.cols() != n || limitDependency.size() != n || x.rows() != n) return false;
+  const double* a = A.getBufferPointer();
+  // The points are the rows that hang on no other; each must be a contact's
+  // normal row (0 to unbounded), each other row a friction row (+-hi).
+  points_.clear();
+  pointOf_.assign(n, -1);
+  for (int i = 0; i < n; ++i) {
+    if (limitDependency[i] >= 0) continue;
+    if (lo[i] != 0 || !(hi[i] > kUnbounded)) return false;
+    pointOf_[i] = static_cast<int>(points_.size());
+    points_.push_back(i);
+  }
+  const int numPoints = static_cast<int>(points_.size());
+  if (frictionRows_.size() < points_.size()) frictionRows_.resize(points_.size());
+  for (int k = 0; k < numPoints; ++k) frictionRows_[k].clear();
+  for (int i = 0; i < n; ++i) {
+    const int normal = limitDependency[i];
+    if (normal < 0) continue;
+    if (normal >= n || pointOf_[normal] < 0 || !(hi[i] >= 0) || lo[i] != -hi[i]) return false;
+    // A slip: friction may stick or slide, and a sticking answer may press
+    // the points together harder than sliding would. Dantzig's pivoting
+    // finds the sliding one.
+    if (hi[i] > 0 && std::abs(b[i]) > kSlipSpeed) return false;
+    frictionRows_[pointOf_[normal]].push_back(i);
+  }
+  orderPoints(a, n);
+
+  // The first guess: the points that pressed in the last step (the warm
+  // start, when there is one) or whose gap does not open faster than a
+  // resting point's rounding.
+  pressing_.resize(numPoints);
+  for (int k = 0; k < numPoints; ++k) pressing_[k] = x[points_[k]] > 0 || b[points_[k]] > -kOpeningSpeed;
+  y_.resize(n);
+  for (int guess = 0; guess < kMaxGuesses; ++guess) {
+    rows_.clear();
+    for (const int k : order_) {
+      if (!pressing_[k]) continue;
+      rows_.push_back(points_[k]);
+      for (const int f : frictionRows_[k]) {
+        if (hi[f] > 0) rows_.push_back(f);
+      }
+    }
+    if (!factor(a, n)) return false;
+    solution_.assign(n, 0.0);
+    substitute(b);
+    bool changed = false;
+    for (int k = 0; k < numPoints; ++k) {
+      const int p = points_[k];
+      if (pressing_[k]) {
+        if (solution_[p] < 0) pressing_[k] = 0, changed = true;
+        continue;
+      }
+      double w = -b[p];
+      const double* row = a + static_cast<std::size_t>(p) * n;
+      for (const int r : rows_) w += row[r] * solution_[r];
+      if (w < -kClosingTolerance) pressing_[k] = 1, changed = true;
+    }
+    if (changed) continue;
+    // Settled: every friction row must lie inside its cone.
+    for (int k = 0; k < numPoints; ++k) {
+      if (!pressing_[k]) continue;
+      const double normal = solution_[points_[k]];
+      for (const int f : frictionRows_[k]) {
+        if (std::abs(solution_[f]) > hi[f] * normal) return false;
+      }
+    }
+    for (int i = 0; i < n; ++i) x[i] = solution_[i];
+    return true;
+  }
+  return false;
+}
+
+void ActiveSetSolver::orderPoints(const double* a, int n) {
+  const int numPoints = static_cast<int>(points_.size());
+  if (neighbours_.size() < points_.size()) neighbours_.resize(points_.size());
+  for (int k = 0; k < numPoints; ++k) {
+    neighbours_[k].clear();
+    const double* row = a + static_cast<std::size_t>(points_[k]) * n;
+    for (int q = 0; q < numPoints; ++q) {
+      if (q != k && row[points_[q]] != 0) neighbours_[k].push_back(q);
+    }
+  }
+  const auto fewer = [this](int p, int q) {
+    return neighbours_[p].size() != neighbours_[q].size() ? neighbours_[p].size() < neighbours_[q].size() : p < q;
+  };
+  // Cuthill-McKee: breadth first from a point of fewest neighbours, each
+  // point's unvisited neighbours fewest first; then reversed.
+  order_.clear();
+  visited_.assign(numPoints, 0);
+  while (static_cast<int>(order_.size()) < numPoints) {
+    int start = -1;
+    for (int k = 0; k < numPoints; ++k) {
+      if (!visited_[k] && (start < 0 || fewer(k, start))) start = k;
+    }
+    visited_[start] = 1;
+    std::size_t head = order_.size();
+    order_.push_back(start);
+    for (; head < order_.size(); ++head) {
+      const std::size_t from = order_.size();
+      for (const int q : neighbours_[order_[head]]) {
+        if (!visited_[q]) visited_[q] = 1, order_.push_back(q);
+      }
+      std::sort(order_.begin() + static_cast<std::ptrdiff_t>(from), order_.end(), fewer);
+    }
+  }
+  std::reverse(order_.begin(), order_.end());
+}
+
+bool ActiveSetSolver::factor(const double* a, int n) {
+  const int m = static_cast<int>(rows_.size());
+  first_.resize(m);
+  start_.resize(m);
+  std::ptrdiff_t total = 0;
+  for (int i = 0; i < m; ++i) {
+    const double* row = a + static_cast<std::size_t>(rows_[i]) * n;
+    int j = 0;
+    while (j < i && row[rows_[j]] == 0) ++j;
+    first_[i] = j;
+    start_[i] = total - j;  // L(i, j) is l_[start_[i] + j]
+    total += i - j + 1;
+  }
+  l_.resize(static_cast<std::size_t>(total));
+  for (int i = 0; i < m; ++i) {
+    const double* row = a + static_cast<std::size_t>(rows_[i]) * n;
+    double* li = l_.data() + start_[i];
+    const int fi = first_[i];
+    for (int j = fi; j < i; ++j) {
+      const double* lj = l_.data() + start_[j];
+      double s = row[rows_[j]];
+      for (int k = std::max(fi, first_[j]); k < j; ++k) s -= li[k] * lj[k];
+      li[j] = s / lj[j];
+    }
+    double d = row[rows_[i]];
+    for (int k = fi; k < i; ++k) d -= li[k] * li[k];
+    if (!(d > 0)) return false;
+    li[i] = std::sqrt(d);
+  }
+  return true;
+}
+
+void ActiveSetSolver::substitute(const btVectorXu& b) {
+  const int m = static_cast<int>(rows_.size());
+  // L y = b, then L^T x = y, each along the rows' profiles.
+  for (int i = 0; i < m; ++i) {
+    const double* li = l_.data() + start_[i];
+    double s = b[rows_[i]];
+    for (int k = first_[i]; k < i; ++k) s -= li[k] * y_[k];
+    y_[i] = s / li[i];
+  }
+  for (int i = m - 1; i >= 0; --i) {
+    const double* li = l_.data() + start_[i];
+    const double xi = y_[i] / li[i];
+    solution_[rows_[i]] = xi;
+    for (int k = first_[i]; k < i; ++k) y_[k] -= li[k] * xi;
+  }
+}
+
+}  // namespace tabletop
