@@ -13,10 +13,10 @@ namespace tabletop {
 /// The contact solver of full physics, one island at a time (its solver
 /// info's m_minimumSolverBatchSize must be 1, or small islands are batched
 /// together). Each island is solved one of two ways:
-///  - exactly, by Bullet's MLCP solver with Dantzig's pivoting, with a
-///    compliance of kDirectCfm on every row (the four points of a face
-///    resting on a face are redundant, and without it the matrix is
-///    singular);
+///  - exactly, by Bullet's MLCP solver, with a compliance of kDirectCfm on
+///    every row (the four points of a face resting on a face are
+///    redundant, and without it the matrix is singular): a guess of the
+///    pressing points first (ActiveSetSolver), else Dantzig's pivoting;
 ///  - by Bullet's sequential impulses, `iterations` sweeps.
 /// ContactSolver says which: SequentialImpulse never pivots; Dantzig
 /// pivots every island of at most `rowLimit` rows; Automatic pivots those
