@@ -138,6 +138,7 @@ ResultTable hardTable(const std::vector<HardPoint>& points) {
                {"", "rate [Hz]"},
                {"iterations", ""},
                {"islands_direct", "exact"},
+               {"islands_guessed", "guessed"},
                {"islands_swept", "swept"},
                {"islands_long_swept", "long"},
                {"islands_fallen_back", "fell back"},
@@ -162,6 +163,7 @@ ResultTable hardTable(const std::vector<HardPoint>& points) {
     t.rows.push_back(
         {cell(p.scene), cell(p.settings.timestep, 6), cell(nullptr, fixed(1.0 / p.settings.timestep, 0)),
          cell(p.settings.iterations, ""), cell(r.solverUse.direct, std::to_string(r.solverUse.direct)),
+         cell(r.solverUse.guessed, std::to_string(r.solverUse.guessed)),
          cell(r.solverUse.swept, std::to_string(r.solverUse.swept)),
          cell(r.solverUse.longSwept, std::to_string(r.solverUse.longSwept)),
          cell(r.solverUse.fallbacks, std::to_string(r.solverUse.fallbacks)),

@@ -16,7 +16,8 @@ constexpr EnumName<ContactSolver> kNames[] = {
 std::string_view toString(ContactSolver s) { return nameOf(s, kNames); }
 
 std::string describeUse(const SolverUse& use) {
-  return "islands solved exactly " + std::to_string(use.direct) + ", by sweeps " + std::to_string(use.swept) +
+  return "islands solved exactly " + std::to_string(use.direct) + " (by the guess " + std::to_string(use.guessed) +
+         ", by the pivoting " + std::to_string(use.direct - use.guessed) + "), by sweeps " + std::to_string(use.swept) +
          (use.longSwept > 0 ? ", by long sweeps (a load too large to pivot) " + std::to_string(use.longSwept) : "") +
          ", by sweeps after the pivoting failed " + std::to_string(use.fallbacks);
 }

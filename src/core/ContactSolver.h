@@ -25,7 +25,8 @@ enum class ContactSolver { SequentialImpulse, Dantzig, Automatic };
 /// How a run's contact islands were solved, one count per island and step
 /// (or part of a step) with contacts.
 struct SolverUse {
-  long direct = 0;     ///< exactly, by the pivoting
+  long direct = 0;     ///< exactly
+  long guessed = 0;    ///< of those, by a guess of the pressing points (ActiveSetSolver); the rest by the pivoting
   long swept = 0;      ///< by sequential impulses, by choice or by size
   long longSwept = 0;  ///< carrying a load but too large to pivot: the long sweeps (IslandSolver)
   long fallbacks = 0;  ///< meant for the pivoting, which failed on them (then swept)

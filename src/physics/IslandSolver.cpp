@@ -97,7 +97,12 @@ void IslandSolver::dropSlidingCrossFriction(double timeStep) {
 }
 
 bool IslandSolver::solveWholeIsland(const btContactSolverInfo& info) {
-  if (m_solver->solveMLCP(m_A, m_b, m_x, m_lo, m_hi, m_limitDependencies, info.m_numIterations)) return true;
+  const long guessedBefore = activeSet_.solved();
+  if (m_solver->solveMLCP(m_A, m_b, m_x, m_lo, m_hi, m_limitDependencies, info.m_numIterations)) {
+    guessed_ = activeSet_.solved() > guessedBefore;
+    return true;
+  }
+  guessed_ = false;
   raised_ = m_A;
   for (int i = 0; i < raised_.rows(); ++i) raised_.setElem(i, i, raised_(i, i) * (1.0 + kRetryRaise));
   m_x.setZero();
@@ -251,6 +256,7 @@ btScalar IslandSolver::solveGroupCacheFriendlyIterations(btCollisionObject** bod
     ++use_.fallbacks;
   } else {
     ++use_.direct;
+    if (guessed_) ++use_.guessed;
   }
   return result;
 }

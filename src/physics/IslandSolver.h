@@ -142,6 +142,7 @@ class IslandSolver : public btMLCPSolver {
   Way way_ = Way::Sweep;    // how the island being solved is solved
   bool longSweepsTaken_ = false;
   bool counted_ = false;    // the island being solved counts in use_
+  bool guessed_ = false;    // the island just solved exactly was solved by the guess
   SolverUse use_;
 };
 
