@@ -30,30 +30,9 @@ bool ActiveSetSolver::solveByGuess(const btMatrixXu& A, const btVectorXu& b, con
                                    btVectorXu& x) {
   const int n = b.rows();
   if (A.rows() != n || A.cols() != n || limitDependency.size() != n || x.rows() != n) return false;
-  const double* a = A.getBufferPointer();
-  // The points are the rows that hang on no other; each must be a contact's
-  // normal row (0 to unbounded), each other row a friction row (+-hi).
-  points_.clear();
-  pointOf_.assign(n, -1);
-  for (int i = 0; i < n; ++i) {
-    if (limitDependency[i] >= 0) continue;
-    if (lo[i] != 0 || !(hi[i] > kUnbounded)) return false;
-    pointOf_[i] = static_cast<int>(points_.size());
-    points_.push_back(i);
-  }
+  if (!collectPoints(b, lo, hi, limitDependency)) return false;
   const int numPoints = static_cast<int>(points_.size());
-  if (frictionRows_.size() < points_.size()) frictionRows_.resize(points_.size());
-  for (int k = 0; k < numPoints; ++k) frictionRows_[k].clear();
-  for (int i = 0; i < n; ++i) {
-    const int normal = limitDependency[i];
-    if (normal < 0) continue;
-    if (normal >= n || pointOf_[normal] < 0 || !(hi[i] >= 0) || lo[i] != -hi[i]) return false;
-    // A slip: friction may stick or slide, and a sticking answer may press
-    // the points together harder than sliding would. Dantzig's pivoting
-    // finds the sliding one.
-    if (hi[i] > 0 && std::abs(b[i]) > kSlipSpeed) return false;
-    frictionRows_[pointOf_[normal]].push_back(i);
-  }
+  const double* a = A.getBufferPointer();
   orderPoints(a, n);
 
   // The first guess: the points that pressed in the last step (the warm
@@ -99,6 +78,35 @@ bool ActiveSetSolver::solveByGuess(const btMatrixXu& A, const btVectorXu& b, con
     return true;
   }
   return false;
+}
+
+bool ActiveSetSolver::collectPoints(const btVectorXu& b, const btVectorXu& lo, const btVectorXu& hi,
+                                    const btAlignedObjectArray<int>& limitDependency) {
+  const int n = b.rows();
+  // The points are the rows that hang on no other; each must be a contact's
+  // normal row (0 to unbounded), each other row a friction row (+-hi).
+  points_.clear();
+  pointOf_.assign(n, -1);
+  for (int i = 0; i < n; ++i) {
+    if (limitDependency[i] >= 0) continue;
+    if (lo[i] != 0 || !(hi[i] > kUnbounded)) return false;
+    pointOf_[i] = static_cast<int>(points_.size());
+    points_.push_back(i);
+  }
+  const int numPoints = static_cast<int>(points_.size());
+  if (frictionRows_.size() < points_.size()) frictionRows_.resize(points_.size());
+  for (int k = 0; k < numPoints; ++k) frictionRows_[k].clear();
+  for (int i = 0; i < n; ++i) {
+    const int normal = limitDependency[i];
+    if (normal < 0) continue;
+    if (normal >= n || pointOf_[normal] < 0 || !(hi[i] >= 0) || lo[i] != -hi[i]) return false;
+    // A slip: friction may stick or slide, and a sticking answer may press
+    // the points together harder than sliding would. Dantzig's pivoting
+    // finds the sliding one.
+    if (hi[i] > 0 && std::abs(b[i]) > kSlipSpeed) return false;
+    frictionRows_[pointOf_[normal]].push_back(i);
+  }
+  return true;
 }
 
 void ActiveSetSolver::orderPoints(const double* a, int n) {

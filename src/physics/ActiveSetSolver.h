@@ -65,6 +65,10 @@ class ActiveSetSolver : public btMLCPSolverInterface {
  private:
   bool solveByGuess(const btMatrixXu& A, const btVectorXu& b, const btVectorXu& lo, const btVectorXu& hi,
                     const btAlignedObjectArray<int>& limitDependency, btVectorXu& x);
+  // Finds the points (normal rows) and each one's friction rows; false if
+  // the problem is not a contact problem the guess may answer.
+  bool collectPoints(const btVectorXu& b, const btVectorXu& lo, const btVectorXu& hi,
+                     const btAlignedObjectArray<int>& limitDependency);
   // Orders the points (normal rows) by reverse Cuthill-McKee over the
   // pattern of A's normal rows; fills order_.
   void orderPoints(const double* a, int n);
