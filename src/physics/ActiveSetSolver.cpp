@@ -74,6 +74,11 @@ bool ActiveSetSolver::solveByGuess(const btMatrixXu& A, const btVectorXu& b, con
         if (std::abs(solution_[f]) > hi[f] * normal) return false;
       }
     }
+    // A non-finite answer (from a matrix that is not finite) would pass
+    // every test above, each comparison with NaN being false: hand it on.
+    for (int i = 0; i < n; ++i) {
+      if (!std::isfinite(solution_[i])) return false;
+    }
     for (int i = 0; i < n; ++i) x[i] = solution_[i];
     return true;
   }
@@ -88,6 +93,7 @@ bool ActiveSetSolver::collectPoints(const btVectorXu& b, const btVectorXu& lo, c
   points_.clear();
   pointOf_.assign(n, -1);
   for (int i = 0; i < n; ++i) {
+    if (!std::isfinite(b[i])) return false;
     if (limitDependency[i] >= 0) continue;
     if (lo[i] != 0 || !(hi[i] > kUnbounded)) return false;
     pointOf_[i] = static_cast<int>(points_.size());

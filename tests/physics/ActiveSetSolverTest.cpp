@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <utility>
 #include <vector>
@@ -222,8 +223,9 @@ TEST(ActiveSetSolver, TakesInAPointTheFirstGuessLeftOut) {
 
 // Problems the guess must not answer go to the fallback: a friction row
 // slipping faster than kSlipSpeed, a row bounded on both sides that hangs
-// on no other (a joint's), and a stack that slides off: the fallback's
-// answer is the solver's.
+// on no other (a joint's), a box whose friction cannot hold it, and a
+// right-hand side that is not a number: the fallback's answer is the
+// solver's.
 TEST(ActiveSetSolver, HandsOnWhatTheGuessMustNotAnswer) {
   std::mt19937 random(11);
   Recorder fallback;
@@ -246,8 +248,16 @@ TEST(ActiveSetSolver, HandsOnWhatTheGuessMustNotAnswer) {
   for (int r = 4; r < 12; ++r) sliding.hi[r] = 1e-6, sliding.lo[r] = -1e-6, sliding.b[r] = 0.9 * ActiveSetSolver::kSlipSpeed;
   EXPECT_FALSE(solver.solveMLCP(sliding.A, sliding.b, x, sliding.lo, sliding.hi, sliding.dependency, 0));
   EXPECT_EQ(fallback.calls, 3);
+
+  // A non-finite right-hand side: handed on, x left as it was.
+  Problem broken = stackProblem(2, random);
+  broken.b[0] = std::numeric_limits<double>::quiet_NaN();
+  x = broken.x;
+  EXPECT_FALSE(solver.solveMLCP(broken.A, broken.b, x, broken.lo, broken.hi, broken.dependency, 0));
+  EXPECT_EQ(fallback.calls, 4);
+  EXPECT_EQ(x[1], 0.0);
   EXPECT_EQ(solver.solved(), 0);
-  EXPECT_EQ(solver.handedOn(), 3);
+  EXPECT_EQ(solver.handedOn(), 4);
 }
 
 }  // namespace
