@@ -155,30 +155,31 @@ bool ActiveSetSolver::factor(const double* a, int n) {
   const int m = static_cast<int>(rows_.size());
   first_.resize(m);
   start_.resize(m);
-  std::ptrdiff_t total = 0;
+  std::size_t total = 0;
   for (int i = 0; i < m; ++i) {
     const double* row = a + static_cast<std::size_t>(rows_[i]) * n;
     int j = 0;
     while (j < i && row[rows_[j]] == 0) ++j;
     first_[i] = j;
-    start_[i] = total - j;  // L(i, j) is l_[start_[i] + j]
-    total += i - j + 1;
+    start_[i] = total;  // L(i, j) is l_[start_[i] + j - first_[i]]
+    total += static_cast<std::size_t>(i - j + 1);
   }
-  l_.resize(static_cast<std::size_t>(total));
+  l_.resize(total);
   for (int i = 0; i < m; ++i) {
     const double* row = a + static_cast<std::size_t>(rows_[i]) * n;
     double* li = l_.data() + start_[i];
     const int fi = first_[i];
     for (int j = fi; j < i; ++j) {
       const double* lj = l_.data() + start_[j];
+      const int fj = first_[j];
       double s = row[rows_[j]];
-      for (int k = std::max(fi, first_[j]); k < j; ++k) s -= li[k] * lj[k];
-      li[j] = s / lj[j];
+      for (int k = std::max(fi, fj); k < j; ++k) s -= li[k - fi] * lj[k - fj];
+      li[j - fi] = s / lj[j - fj];
     }
     double d = row[rows_[i]];
-    for (int k = fi; k < i; ++k) d -= li[k] * li[k];
+    for (int k = fi; k < i; ++k) d -= li[k - fi] * li[k - fi];
     if (!(d > 0)) return false;
-    li[i] = std::sqrt(d);
+    li[i - fi] = std::sqrt(d);
   }
   return true;
 }
@@ -188,15 +189,17 @@ void ActiveSetSolver::substitute(const btVectorXu& b) {
   // L y = b, then L^T x = y, each along the rows' profiles.
   for (int i = 0; i < m; ++i) {
     const double* li = l_.data() + start_[i];
+    const int fi = first_[i];
     double s = b[rows_[i]];
-    for (int k = first_[i]; k < i; ++k) s -= li[k] * y_[k];
-    y_[i] = s / li[i];
+    for (int k = fi; k < i; ++k) s -= li[k - fi] * y_[k];
+    y_[i] = s / li[i - fi];
   }
   for (int i = m - 1; i >= 0; --i) {
     const double* li = l_.data() + start_[i];
-    const double xi = y_[i] / li[i];
+    const int fi = first_[i];
+    const double xi = y_[i] / li[i - fi];
     solution_[rows_[i]] = xi;
-    for (int k = first_[i]; k < i; ++k) y_[k] -= li[k] * xi;
+    for (int k = fi; k < i; ++k) y_[k] -= li[k - fi] * xi;
   }
 }
 

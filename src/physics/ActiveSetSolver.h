@@ -91,7 +91,7 @@ class ActiveSetSolver : public btMLCPSolverInterface {
   std::vector<char> pressing_;       // per point: in the guess
   std::vector<int> rows_;            // the rows solved as equations, in order
   std::vector<int> first_;           // per row of rows_: its profile's first column
-  std::vector<std::size_t> start_;   // per row of rows_: where its factor row starts in l_
+  std::vector<std::size_t> start_;   // per row of rows_: where L(i, first_[i]) is in l_
   std::vector<double> l_;            // the factor's rows along the profile
   std::vector<double> y_;            // per row of rows_ (substitute)
   std::vector<double> solution_;     // per row of the problem
