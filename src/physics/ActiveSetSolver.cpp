@@ -16,7 +16,7 @@ bool ActiveSetSolver::solveMLCP(const btMatrixXu& A, const btVectorXu& b, btVect
                                 const btVectorXu& hi, const btAlignedObjectArray<int>& limitDependency,
                                 int numIterations, bool useSparsity) {
   if (b.rows() > 0) {
-    if (solveByGuess(A, b, lo, hi, limitDependency, x)) {
+    if (solveByGuess(A, b, lo, hi, limitDependency, nullptr, x)) {
       ++solved_;
       return true;
     }
@@ -25,15 +25,30 @@ bool ActiveSetSolver::solveMLCP(const btMatrixXu& A, const btVectorXu& b, btVect
   return fallback_.solveMLCP(A, b, x, lo, hi, limitDependency, numIterations, useSparsity);
 }
 
+bool ActiveSetSolver::solveMLCP(const btMatrixXu& A, const btVectorXu& b, btVectorXu& x, const btVectorXu& lo,
+                                const btVectorXu& hi, const btAlignedObjectArray<int>& limitDependency,
+                                const RowBodies* rowBodies) {
+  if (b.rows() > 0) {
+    if (rowBodies != nullptr && rowBodies->size() != static_cast<std::size_t>(b.rows())) rowBodies = nullptr;
+    if (solveByGuess(A, b, lo, hi, limitDependency, rowBodies, x)) {
+      ++solved_;
+      return true;
+    }
+    ++handedOn_;
+  }
+  return fallback_.solveMLCP(A, b, x, lo, hi, limitDependency, 0);
+}
+
 bool ActiveSetSolver::solveByGuess(const btMatrixXu& A, const btVectorXu& b, const btVectorXu& lo,
                                    const btVectorXu& hi, const btAlignedObjectArray<int>& limitDependency,
-                                   btVectorXu& x) {
+                                   const RowBodies* rowBodies, btVectorXu& x) {
   const int n = b.rows();
   if (A.rows() != n || A.cols() != n || limitDependency.size() != n || x.rows() != n) return false;
   if (!collectPoints(b, lo, hi, limitDependency)) return false;
   const int numPoints = static_cast<int>(points_.size());
   const double* a = A.getBufferPointer();
-  orderPoints(a, n);
+  findNeighbours(a, n, rowBodies);
+  orderPoints();
 
   // The first guess: the points that pressed in the last step (the warm
   // start, when there is one) or whose gap does not open faster than a
@@ -50,6 +65,7 @@ bool ActiveSetSolver::solveByGuess(const btMatrixXu& A, const btVectorXu& b, con
         if (hi[f] > 0) rows_.push_back(f);
       }
     }
+    findProfile(a, n, rowBodies);
     if (!factor(a, n)) return false;
     solution_.assign(n, 0.0);
     substitute(b);
@@ -115,16 +131,40 @@ bool ActiveSetSolver::collectPoints(const btVectorXu& b, const btVectorXu& lo, c
   return true;
 }
 
-void ActiveSetSolver::orderPoints(const double* a, int n) {
+void ActiveSetSolver::findNeighbours(const double* a, int n, const RowBodies* rowBodies) {
   const int numPoints = static_cast<int>(points_.size());
   if (neighbours_.size() < points_.size()) neighbours_.resize(points_.size());
+  for (int k = 0; k < numPoints; ++k) neighbours_[k].clear();
+  if (rowBodies == nullptr) {
+    for (int k = 0; k < numPoints; ++k) {
+      const double* row = a + static_cast<std::size_t>(points_[k]) * n;
+      for (int q = 0; q < numPoints; ++q) {
+        if (q != k && row[points_[q]] != 0) neighbours_[k].push_back(q);
+      }
+    }
+    return;
+  }
+  for (std::vector<int>& points : bodyPoints_) points.clear();
   for (int k = 0; k < numPoints; ++k) {
-    neighbours_[k].clear();
-    const double* row = a + static_cast<std::size_t>(points_[k]) * n;
-    for (int q = 0; q < numPoints; ++q) {
-      if (q != k && row[points_[q]] != 0) neighbours_[k].push_back(q);
+    for (const int body : (*rowBodies)[points_[k]]) {
+      if (body < 0) continue;
+      if (bodyPoints_.size() <= static_cast<std::size_t>(body)) bodyPoints_.resize(body + 1);
+      bodyPoints_[body].push_back(k);
     }
   }
+  for (int k = 0; k < numPoints; ++k) {
+    std::vector<int>& mine = neighbours_[k];
+    for (const int body : (*rowBodies)[points_[k]]) {
+      if (body >= 0) mine.insert(mine.end(), bodyPoints_[body].begin(), bodyPoints_[body].end());
+    }
+    std::sort(mine.begin(), mine.end());
+    mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
+    mine.erase(std::remove(mine.begin(), mine.end(), k), mine.end());
+  }
+}
+
+void ActiveSetSolver::orderPoints() {
+  const int numPoints = static_cast<int>(points_.size());
   const auto fewer = [this](int p, int q) {
     return neighbours_[p].size() != neighbours_[q].size() ? neighbours_[p].size() < neighbours_[q].size() : p < q;
   };
@@ -151,16 +191,38 @@ void ActiveSetSolver::orderPoints(const double* a, int n) {
   std::reverse(order_.begin(), order_.end());
 }
 
-bool ActiveSetSolver::factor(const double* a, int n) {
+void ActiveSetSolver::findProfile(const double* a, int n, const RowBodies* rowBodies) {
   const int m = static_cast<int>(rows_.size());
   first_.resize(m);
+  if (rowBodies == nullptr) {
+    for (int i = 0; i < m; ++i) {
+      const double* row = a + static_cast<std::size_t>(rows_[i]) * n;
+      int j = 0;
+      while (j < i && row[rows_[j]] == 0) ++j;
+      first_[i] = j;
+    }
+    return;
+  }
+  // A row starts at the first row that shares one of its bodies.
+  bodyFirst_.assign(bodyPoints_.size(), -1);
+  for (int i = 0; i < m; ++i) {
+    first_[i] = i;
+    for (const int body : (*rowBodies)[rows_[i]]) {
+      if (body < 0) continue;
+      if (static_cast<std::size_t>(body) >= bodyFirst_.size()) bodyFirst_.resize(body + 1, -1);
+      int& at = bodyFirst_[body];
+      if (at < 0) at = i;
+      first_[i] = std::min(first_[i], at);
+    }
+  }
+}
+
+bool ActiveSetSolver::factor(const double* a, int n) {
+  const int m = static_cast<int>(rows_.size());
   start_.resize(m);
   std::size_t total = 0;
   for (int i = 0; i < m; ++i) {
-    const double* row = a + static_cast<std::size_t>(rows_[i]) * n;
-    int j = 0;
-    while (j < i && row[rows_[j]] == 0) ++j;
-    first_[i] = j;
+    const int j = first_[i];
     start_[i] = total;  // L(i, j) is l_[start_[i] + j - first_[i]]
     total += static_cast<std::size_t>(i - j + 1);
   }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include <BulletDynamics/MLCPSolvers/btMLCPSolverInterface.h>
@@ -45,6 +46,15 @@ class ActiveSetSolver : public btMLCPSolverInterface {
   bool solveMLCP(const btMatrixXu& A, const btVectorXu& b, btVectorXu& x, const btVectorXu& lo, const btVectorXu& hi,
                  const btAlignedObjectArray<int>& limitDependency, int numIterations, bool useSparsity = true) override;
 
+  /// Each row's two bodies (an index per body, -1 for one that does not
+  /// move). Rows with no body in common meet in a zero of A, so with these
+  /// the points' neighbours and the factor's profile come from the bodies,
+  /// not from scanning A for zeros (a tenth of the ten-cube stack's step).
+  using RowBodies = std::vector<std::array<int, 2>>;
+  /// As above, with the rows' bodies (nullptr, or not one per row: scan A).
+  bool solveMLCP(const btMatrixXu& A, const btVectorXu& b, btVectorXu& x, const btVectorXu& lo, const btVectorXu& hi,
+                 const btAlignedObjectArray<int>& limitDependency, const RowBodies* rowBodies);
+
   /// How many problems were solved by the guess, and how many handed on.
   long solved() const { return solved_; }
   long handedOn() const { return handedOn_; }
@@ -64,14 +74,20 @@ class ActiveSetSolver : public btMLCPSolverInterface {
 
  private:
   bool solveByGuess(const btMatrixXu& A, const btVectorXu& b, const btVectorXu& lo, const btVectorXu& hi,
-                    const btAlignedObjectArray<int>& limitDependency, btVectorXu& x);
+                    const btAlignedObjectArray<int>& limitDependency, const RowBodies* rowBodies, btVectorXu& x);
   // Finds the points (normal rows) and each one's friction rows; false if
   // the problem is not a contact problem the guess may answer.
   bool collectPoints(const btVectorXu& b, const btVectorXu& lo, const btVectorXu& hi,
                      const btAlignedObjectArray<int>& limitDependency);
-  // Orders the points (normal rows) by reverse Cuthill-McKee over the
-  // pattern of A's normal rows; fills order_.
-  void orderPoints(const double* a, int n);
+  // Each point's neighbours (the points it meets in a non-zero of A): from
+  // the rows' bodies when given, else from A's normal rows.
+  void findNeighbours(const double* a, int n, const RowBodies* rowBodies);
+  // Orders the points (normal rows) by reverse Cuthill-McKee over their
+  // neighbours; fills order_.
+  void orderPoints();
+  // Finds where each row of rows_ starts along the profile (first_), from
+  // the rows' bodies when given, else by scanning A.
+  void findProfile(const double* a, int n, const RowBodies* rowBodies);
   // Factors A's rows rows_ (in that order) along their profile into l_;
   // false at a non-positive pivot.
   bool factor(const double* a, int n);
@@ -88,6 +104,8 @@ class ActiveSetSolver : public btMLCPSolverInterface {
   std::vector<std::vector<int>> neighbours_;    // per point
   std::vector<int> order_;           // points in factoring order
   std::vector<char> visited_;        // per point (orderPoints)
+  std::vector<std::vector<int>> bodyPoints_;  // per body: its points (findNeighbours)
+  std::vector<int> bodyFirst_;       // per body: its first row in rows_ (findProfile)
   std::vector<char> pressing_;       // per point: in the guess
   std::vector<int> rows_;            // the rows solved as equations, in order
   std::vector<int> first_;           // per row of rows_: its profile's first column

@@ -98,7 +98,7 @@ void IslandSolver::dropSlidingCrossFriction(double timeStep) {
 
 bool IslandSolver::solveWholeIsland(const btContactSolverInfo& info) {
   const long guessedBefore = activeSet_.solved();
-  if (m_solver->solveMLCP(m_A, m_b, m_x, m_lo, m_hi, m_limitDependencies, info.m_numIterations)) {
+  if (activeSet_.solveMLCP(m_A, m_b, m_x, m_lo, m_hi, m_limitDependencies, &rowBodies_)) {
     guessed_ = activeSet_.solved() > guessedBefore;
     return true;
   }
@@ -126,12 +126,14 @@ bool IslandSolver::solveMLCP(const btContactSolverInfo& info) {
   a.resize(n, n);
   a.setZero();
   b.resize(n), x.resize(n), lo.resize(n), hi.resize(n);
+  split_.bodies.resize(n);
   for (int r = 0; r < n; ++r) {
     for (int c = 0; c < n; ++c) {
       const btScalar v = m_A(normals[r], normals[c]);
       if (v != 0) a.setElem(r, c, v);
     }
     b[r] = m_bSplit[normals[r]];
+    split_.bodies[r] = rowBodies_[normals[r]];
     x[r] = 0;
     lo[r] = m_lo[normals[r]];
     hi[r] = m_hi[normals[r]];
@@ -148,7 +150,7 @@ bool IslandSolver::solveMLCP(const btContactSolverInfo& info) {
   btAlignedObjectArray<int>& none = split_.noLimits;
   none.resize(n);
   for (int r = 0; r < n; ++r) none[r] = -1;
-  if (n > 0 && m_solver->solveMLCP(a, b, x, lo, hi, none, info.m_numIterations)) {
+  if (n > 0 && activeSet_.solveMLCP(a, b, x, lo, hi, none, &split_.bodies)) {
     for (int r = 0; r < n; ++r) m_xSplit[normals[r]] = x[r];
   }
   return true;
@@ -173,8 +175,11 @@ void IslandSolver::createMLCPFast(const btContactSolverInfo& info) {
     }
     bodyRows_[static_cast<std::size_t>(solverBody)].push_back(side);
   };
+  rowBodies_.resize(n);
+  const auto moving = [this](int solverBody) { return m_tmpSolverBodyPool[solverBody].m_originalBody ? solverBody : -1; };
   for (int i = 0; i < n; ++i) {
     const btSolverConstraint& c = *m_allConstraintPtrArray[i];
+    rowBodies_[i] = {moving(c.m_solverBodyIdA), moving(c.m_solverBodyIdB)};
     const bool none = btFuzzyZero(c.m_jacDiagABInv);
     m_b[i] = none ? 0 : c.m_rhs / c.m_jacDiagABInv;
     m_bSplit[i] = none ? 0 : c.m_rhsPenetration / c.m_jacDiagABInv;

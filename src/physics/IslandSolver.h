@@ -127,6 +127,7 @@ class IslandSolver : public btMLCPSolver {
     btMatrixXu a;
     btVectorXu b, x, lo, hi;
     btAlignedObjectArray<int> noLimits;  // -1 each: no row bounds another
+    ActiveSetSolver::RowBodies bodies;   // each row's bodies
   } split_;
   // One row's Jacobian on one body, and M^-1 times it (createMLCPFast).
   struct BodyRow {
@@ -134,6 +135,7 @@ class IslandSolver : public btMLCPSolver {
     double j[6], mj[6];
   };
   std::vector<std::vector<BodyRow>> bodyRows_;  // per solver body
+  ActiveSetSolver::RowBodies rowBodies_;         // per row: its moving bodies' solver indices, else -1
   btMatrixXu raised_;  // the problem raised for the second try (solveWholeIsland)
   ContactSolver choice_;
   int rowLimit_;
