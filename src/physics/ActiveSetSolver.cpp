@@ -14,15 +14,10 @@ constexpr double kUnbounded = 1e9;
 
 bool ActiveSetSolver::solveMLCP(const btMatrixXu& A, const btVectorXu& b, btVectorXu& x, const btVectorXu& lo,
                                 const btVectorXu& hi, const btAlignedObjectArray<int>& limitDependency,
-                                int numIterations, bool useSparsity) {
-  if (b.rows() > 0) {
-    if (solveByGuess(A, b, lo, hi, limitDependency, nullptr, x)) {
-      ++solved_;
-      return true;
-    }
-    ++handedOn_;
-  }
-  return fallback_.solveMLCP(A, b, x, lo, hi, limitDependency, numIterations, useSparsity);
+                                int /*numIterations*/, bool /*useSparsity*/) {
+  // Neither the guess nor Dantzig's pivoting (the fallback) uses the
+  // iteration count or the sparsity flag.
+  return solveMLCP(A, b, x, lo, hi, limitDependency, nullptr);
 }
 
 bool ActiveSetSolver::solveMLCP(const btMatrixXu& A, const btVectorXu& b, btVectorXu& x, const btVectorXu& lo,
