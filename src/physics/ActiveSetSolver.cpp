@@ -42,48 +42,73 @@ bool ActiveSetSolver::solveByGuess(const btMatrixXu& A, const btVectorXu& b, con
   if (!collectPoints(b, lo, hi, limitDependency)) return false;
   const int numPoints = static_cast<int>(points_.size());
   const double* a = A.getBufferPointer();
-  findNeighbours(a, n, rowBodies);
-  orderPoints();
+  // A small island is factored whole, in its own order: ordering it would
+  // cost more than the zeros it skips.
+  const bool small = numPoints <= kWholePoints;
+  if (small) {
+    order_.resize(numPoints);
+    for (int k = 0; k < numPoints; ++k) order_[k] = k;
+  } else {
+    findNeighbours(a, n, rowBodies);
+    orderPoints();
+  }
 
   // The first guess: the points that pressed in the last step (the warm
   // start, when there is one) or whose gap does not open faster than a
-  // resting point's rounding.
+  // resting point's rounding; each friction row slides against its slip,
+  // or sticks.
   pressing_.resize(numPoints);
-  for (int k = 0; k < numPoints; ++k) pressing_[k] = x[points_[k]] > 0 || b[points_[k]] > -kOpeningSpeed;
+  slide_.assign(n, 0);
+  for (int k = 0; k < numPoints; ++k) {
+    pressing_[k] = x[points_[k]] > 0 || b[points_[k]] > -kOpeningSpeed;
+    guessFriction(k, b, hi);
+  }
   y_.resize(n);
   for (int guess = 0; guess < kMaxGuesses; ++guess) {
     rows_.clear();
+    slid_.clear();
     for (const int k : order_) {
       if (!pressing_[k]) continue;
       rows_.push_back(points_[k]);
       for (const int f : frictionRows_[k]) {
-        if (hi[f] > 0) rows_.push_back(f);
+        if (hi[f] > 0) (slide_[f] != 0 ? slid_ : rows_).push_back(f);
       }
     }
-    findProfile(a, n, rowBodies);
-    if (!factor(a, n)) return false;
+    if (small) first_.assign(rows_.size(), 0);
+    else findProfile(a, n, rowBodies);
+    if (!(slid_.empty() ? factor(a, n) : factorSliding(a, n, hi))) return false;
     solution_.assign(n, 0.0);
-    substitute(b);
+    substitute(b, !slid_.empty());
+    for (const int f : slid_) solution_[f] = slide_[f] * hi[f] * solution_[limitDependency[f]];
+    // Points in and out, then friction rows from sticking to sliding: a
+    // guess changes what its answer shows wrong, all at once.
     bool changed = false;
     for (int k = 0; k < numPoints; ++k) {
       const int p = points_[k];
       if (pressing_[k]) {
         if (solution_[p] < 0) pressing_[k] = 0, changed = true;
-        continue;
+      } else if (gapSpeed(a, n, b, p) < -kClosingTolerance) {
+        pressing_[k] = 1, changed = true;
+        guessFriction(k, b, hi);
       }
-      double w = -b[p];
-      const double* row = a + static_cast<std::size_t>(p) * n;
-      for (const int r : rows_) w += row[r] * solution_[r];
-      if (w < -kClosingTolerance) pressing_[k] = 1, changed = true;
     }
     if (changed) continue;
-    // Settled: every friction row must lie inside its cone.
     for (int k = 0; k < numPoints; ++k) {
       if (!pressing_[k]) continue;
-      const double normal = solution_[points_[k]];
+      const double bound = solution_[points_[k]];
       for (const int f : frictionRows_[k]) {
-        if (std::abs(solution_[f]) > hi[f] * normal) return false;
+        if (slide_[f] == 0 && std::abs(solution_[f]) > hi[f] * bound) {
+          slide_[f] = solution_[f] > 0 ? 1 : -1;
+          changed = true;
+        }
       }
+    }
+    if (changed) continue;
+    // A sliding row whose answer turns its slip round would stick: where
+    // friction sticks and slides on one problem, sticking answers can
+    // press harder than sliding, so that is the fallback's to answer.
+    for (const int f : slid_) {
+      if (slide_[f] * gapSpeed(a, n, b, f) > kClosingTolerance) return false;
     }
     // A non-finite answer (from a matrix that is not finite) would pass
     // every test above, each comparison with NaN being false: hand it on.
@@ -94,6 +119,21 @@ bool ActiveSetSolver::solveByGuess(const btMatrixXu& A, const btVectorXu& b, con
     return true;
   }
   return false;
+}
+
+void ActiveSetSolver::guessFriction(int point, const btVectorXu& b, const btVectorXu& hi) {
+  for (const int f : frictionRows_[point]) {
+    const bool slips = hi[f] > 0 && std::abs(b[f]) > kSlipSpeed;
+    slide_[f] = !slips ? 0 : b[f] > 0 ? 1 : -1;
+  }
+}
+
+double ActiveSetSolver::gapSpeed(const double* a, int n, const btVectorXu& b, int row) const {
+  double w = -b[row];
+  const double* r = a + static_cast<std::size_t>(row) * n;
+  for (const int j : rows_) w += r[j] * solution_[j];
+  for (const int j : slid_) w += r[j] * solution_[j];
+  return w;
 }
 
 bool ActiveSetSolver::collectPoints(const btVectorXu& b, const btVectorXu& lo, const btVectorXu& hi,
@@ -117,10 +157,6 @@ bool ActiveSetSolver::collectPoints(const btVectorXu& b, const btVectorXu& lo, c
     const int normal = limitDependency[i];
     if (normal < 0) continue;
     if (normal >= n || pointOf_[normal] < 0 || !(hi[i] >= 0) || lo[i] != -hi[i]) return false;
-    // A slip: friction may stick or slide, and a sticking answer may press
-    // the points together harder than sliding would. Dantzig's pivoting
-    // finds the sliding one.
-    if (hi[i] > 0 && std::abs(b[i]) > kSlipSpeed) return false;
     frictionRows_[pointOf_[normal]].push_back(i);
   }
   return true;
@@ -241,22 +277,73 @@ bool ActiveSetSolver::factor(const double* a, int n) {
   return true;
 }
 
-void ActiveSetSolver::substitute(const btVectorXu& b) {
+bool ActiveSetSolver::factorSliding(const double* a, int n, const btVectorXu& hi) {
   const int m = static_cast<int>(rows_.size());
-  // L y = b, then L^T x = y, each along the rows' profiles.
+  // M(i, j): A's entry, and where row j is a point's normal, what its
+  // sliding friction rows (x_f = s hi x_j) add to row i.
+  const auto element = [&](int i, int j) {
+    const double* row = a + static_cast<std::size_t>(rows_[i]) * n;
+    double v = row[rows_[j]];
+    const int point = pointOf_[rows_[j]];
+    if (point >= 0) {
+      for (const int f : frictionRows_[point]) {
+        if (slide_[f] != 0) v += slide_[f] * hi[f] * row[f];
+      }
+    }
+    return v;
+  };
+  start_.resize(m);
+  std::size_t total = 0;
+  for (int i = 0; i < m; ++i) {
+    start_[i] = total;
+    total += static_cast<std::size_t>(i - first_[i] + 1);
+  }
+  l_.resize(total);
+  u_.resize(total);
+  // Doolittle along the profile: row i of L (unit diagonal) and column i
+  // of U, both from first_[i].
+  for (int i = 0; i < m; ++i) {
+    double* li = l_.data() + start_[i];
+    double* ui = u_.data() + start_[i];
+    const int fi = first_[i];
+    for (int j = fi; j < i; ++j) {
+      const double* lj = l_.data() + start_[j];
+      const double* uj = u_.data() + start_[j];
+      const int fj = first_[j];
+      double s = element(i, j), t = element(j, i);
+      for (int k = std::max(fi, fj); k < j; ++k) {
+        s -= li[k - fi] * uj[k - fj];
+        t -= lj[k - fj] * ui[k - fi];
+      }
+      li[j - fi] = s / uj[j - fj];
+      ui[j - fi] = t;
+    }
+    double d = element(i, i);
+    for (int k = fi; k < i; ++k) d -= li[k - fi] * ui[k - fi];
+    if (!(d > 0)) return false;
+    ui[i - fi] = d;
+  }
+  return true;
+}
+
+void ActiveSetSolver::substitute(const btVectorXu& b, bool sliding) {
+  const int m = static_cast<int>(rows_.size());
+  // L y = b, then U x = y (L^T for the Cholesky factor), each along the
+  // rows' profiles.
   for (int i = 0; i < m; ++i) {
     const double* li = l_.data() + start_[i];
     const int fi = first_[i];
     double s = b[rows_[i]];
     for (int k = fi; k < i; ++k) s -= li[k - fi] * y_[k];
-    y_[i] = s / li[i - fi];
+    y_[i] = sliding ? s : s / li[i - fi];
   }
+  const std::vector<double>& upper = sliding ? u_ : l_;
   for (int i = m - 1; i >= 0; --i) {
-    const double* li = l_.data() + start_[i];
+    const double* ui = upper.data() + start_[i];
     const int fi = first_[i];
-    const double xi = y_[i] / li[i - fi];
+    const double xi = y_[i] / ui[i - fi];
     solution_[rows_[i]] = xi;
-    for (int k = fi; k < i; ++k) y_[k] -= li[k - fi] * xi;
+    for (int k = fi; k < i; ++k) y_[k] -= ui[k - fi] * xi;
   }
 }
 

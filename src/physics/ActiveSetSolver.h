@@ -10,27 +10,32 @@ namespace tabletop {
 /// An island's contact problem as Bullet's MLCP solver poses it (A x = b + w,
 /// each x between lo and hi with w >= 0 at lo, w <= 0 at hi and w = 0
 /// between; a friction row's bounds are +-hi times its normal row's x),
-/// solved the way the problem of an island at rest looks: every pressing
-/// point's normal row and every friction row an equation.
+/// solved the way the problems of islands at rest and of slides look:
+/// every pressing point's normal row an equation, each friction row either
+/// an equation (it sticks) or at the bound that opposes its slip.
 ///
 /// It guesses which points press (those that pressed in the last step, and
-/// those whose gap does not open faster than kOpeningSpeed), solves
-/// their rows by a Cholesky factorization, then moves a point whose
-/// impulse came out negative out of the guess and one whose gap would
-/// close into it, and solves again (block principal pivoting), at most
-/// kMaxGuesses times. It accepts a solution whose friction rows all lie
-/// inside their cones: with every bound fixed, A positive definite (Bullet's
-/// global CFM on every row) makes that the one solution. Friction bounds
-/// hang on the normals, though, and where a point slips a sticking answer
-/// can exist beside the sliding one, pressing the bodies together harder
-/// (a 5 kg cone pushed at 4.8 m/s over a 51 g box: normal impulses seven
-/// times Dantzig's, 0.3 J gained). So a problem with a friction row that
-/// slips (faster than kSlipSpeed), a friction row outside its cone, a guess
-/// that does not settle, or a non-positive pivot goes to `fallback`
-/// (Dantzig's pivoting). Where both answer, they agree on the normal
-/// impulses; on friction the guess keeps Coulomb's law where Dantzig, which
-/// fixes a friction row's bounds from its normal as it stood when the row
-/// was taken in, can leave friction on a point whose normal ended at zero.
+/// those whose gap does not open faster than kOpeningSpeed) and which
+/// friction rows slide (those slipping faster than kSlipSpeed, against the
+/// slip), solves the rest as equations, then moves a point whose impulse
+/// came out negative out of the guess and one whose gap would close into
+/// it, and a sticking row outside its cone to its bound, and solves again
+/// (block principal pivoting), at most kMaxGuesses times. With no row
+/// sliding the equations are A's, positive definite (Bullet's global CFM
+/// on every row), and solved by a Cholesky factorization; with a sliding
+/// row its impulse is its normal's times +-hi, which makes the reduced
+/// matrix non-symmetric, and solved by an LU factorization without row
+/// exchanges. Friction bounds hang on the normals, though, and where a
+/// point slips a sticking answer can exist beside the sliding one,
+/// pressing the bodies together harder (a 5 kg cone pushed at 4.8 m/s over
+/// a 51 g box: normal impulses seven times Dantzig's, 0.3 J gained). So a
+/// sliding row is never made to stick: a problem whose answer would turn a
+/// slip round, a guess that does not settle, or a non-positive pivot goes
+/// to `fallback` (Dantzig's pivoting). Where both answer, they agree on
+/// the normal impulses; on friction the guess keeps Coulomb's law where
+/// Dantzig, which fixes a friction row's bounds from its normal as it
+/// stood when the row was taken in, can leave friction on a point whose
+/// normal ended at zero.
 ///
 /// Why: Dantzig's pivoting adds one row at a time and solves the
 /// triangular factors afresh for each, about 2 n^3 operations for n rows;
@@ -59,13 +64,14 @@ class ActiveSetSolver : public btMLCPSolverInterface {
   long solved() const { return solved_; }
   long handedOn() const { return handedOn_; }
 
-  /// A problem with a friction row that slips faster than this (m/s) is
-  /// handed on at once.
+  /// A friction row that slips faster than this (m/s) is guessed to slide.
   static constexpr double kSlipSpeed = 1e-3;
   /// A point whose gap opens slower than this (m/s) is guessed to press: the
   /// points of a stack at rest open and close by rounding, and a guess
   /// that left them out took a sweep of guesses per layer.
   static constexpr double kOpeningSpeed = 1e-3;
+  /// Problems of at most this many points are factored whole, unordered.
+  static constexpr int kWholePoints = 8;
   /// The most guesses before the problem is handed on.
   static constexpr int kMaxGuesses = 8;
   /// A point out of the guess joins it when its gap would close faster
@@ -91,8 +97,17 @@ class ActiveSetSolver : public btMLCPSolverInterface {
   // Factors A's rows rows_ (in that order) along their profile into l_;
   // false at a non-positive pivot.
   bool factor(const double* a, int n);
-  // Solves with l_ for the right-hand side b over rows_, into solution_.
-  void substitute(const btVectorXu& b);
+  // The same for M, A's rows_ with the sliding rows' impulses written as
+  // their normals' (non-symmetric), into l_ (unit lower) and u_ (upper,
+  // by columns); false at a non-positive pivot.
+  bool factorSliding(const double* a, int n, const btVectorXu& hi);
+  // Solves with l_ (and u_ when `sliding`) for the right-hand side b over
+  // rows_, into solution_.
+  void substitute(const btVectorXu& b, bool sliding);
+  // Sets a point's friction rows to slide against their slip, or to stick.
+  void guessFriction(int point, const btVectorXu& b, const btVectorXu& hi);
+  // A row's gap speed w = A x - b for the answer in solution_.
+  double gapSpeed(const double* a, int n, const btVectorXu& b, int row) const;
 
   btMLCPSolverInterface& fallback_;
   long solved_ = 0;
@@ -111,6 +126,9 @@ class ActiveSetSolver : public btMLCPSolverInterface {
   std::vector<int> first_;           // per row of rows_: its profile's first column
   std::vector<std::size_t> start_;   // per row of rows_: where L(i, first_[i]) is in l_
   std::vector<double> l_;            // the factor's rows along the profile
+  std::vector<double> u_;            // the columns of U along the profile (factorSliding)
+  std::vector<signed char> slide_;   // per row: a friction row sliding up (+1), down (-1), or sticking
+  std::vector<int> slid_;            // the sliding rows of the pressing points
   std::vector<double> y_;            // per row of rows_ (substitute)
   std::vector<double> solution_;     // per row of the problem
 };
