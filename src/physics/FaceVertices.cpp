@@ -45,7 +45,8 @@ void FaceVertices::processCollision(const btCollisionObjectWrapper* body0, const
   // tried first, so the roles stay put from step to step.
   const bool box0 = isBox(*body0->getCollisionShape());
   const bool box1 = isBox(*body1->getCollisionShape());
-  if ((box0 && touchFace(body0, body1, true, result)) || (box1 && touchFace(body1, body0, false, result))) {
+  if ((box0 && touchFace(body0, body1, true, info.m_timeStep, result)) ||
+      (box1 && touchFace(body1, body0, false, info.m_timeStep, result))) {
     clearOtherwise();
     return;
   }
@@ -85,7 +86,7 @@ void FaceVertices::clipApart(const btCollisionObjectWrapper* body0, const btColl
 }
 
 bool FaceVertices::touchFace(const btCollisionObjectWrapper* boxWrap, const btCollisionObjectWrapper* solidWrap,
-                             bool boxFirst, btManifoldResult* result) {
+                             bool boxFirst, btScalar timeStep, btManifoldResult* result) {
   const auto* box = static_cast<const btBoxShape*>(boxWrap->getCollisionShape());
   const auto* solid = static_cast<const btConvexShape*>(solidWrap->getCollisionShape());
   const btTransform& boxPose = boxWrap->getWorldTransform();
@@ -109,7 +110,8 @@ bool FaceVertices::touchFace(const btCollisionObjectWrapper* boxWrap, const btCo
   if (normal.dot(solidPose.getOrigin()) <= offset) return false;  // its centre is not out over the face
 
   std::vector<NearCorner> near =
-      nearCorners(*solid, solidPose, normal, offset, manifold_->getContactBreakingThreshold());
+      nearCorners(*solid, solidPose, normal, offset, manifold_->getContactBreakingThreshold(),
+                  {solidWrap->getCollisionObject(), boxWrap->getCollisionObject(), timeStep});
   for (const NearCorner& c : near) {
     // Over the face: within its edges along the two other axes.
     const btVector3 local = boxPose.invXform(c.point);

@@ -46,9 +46,10 @@ class FaceVertices : public btActivatingCollisionAlgorithm {
   };
 
  private:
-  // The face's points, or false when the solid does not rest on a face.
+  // The face's points, or false when the solid does not rest on a face;
+  // `timeStep` (s) is the coming step's, over which corners close.
   bool touchFace(const btCollisionObjectWrapper* boxWrap, const btCollisionObjectWrapper* solidWrap, bool boxFirst,
-                 btManifoldResult* result);
+                 btScalar timeStep, btManifoldResult* result);
   void clearOtherwise();
   // Two boxes a hair apart where neither rests on the other's face (a cube
   // tipping over the table's edge, lifted a nanometre by the last solve):

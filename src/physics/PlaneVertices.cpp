@@ -17,7 +17,7 @@ PlaneVertices::~PlaneVertices() {
 }
 
 void PlaneVertices::processCollision(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
-                                     const btDispatcherInfo&, btManifoldResult* result) {
+                                     const btDispatcherInfo& info, btManifoldResult* result) {
   const bool planeFirst = body0->getCollisionShape()->getShapeType() == STATIC_PLANE_PROXYTYPE;
   const btCollisionObjectWrapper* planeWrap = planeFirst ? body0 : body1;
   const btCollisionObjectWrapper* solidWrap = planeFirst ? body1 : body0;
@@ -30,7 +30,8 @@ void PlaneVertices::processCollision(const btCollisionObjectWrapper* body0, cons
 
   result->setPersistentManifold(manifold_);
   std::vector<NearCorner> near =
-      nearCorners(*solid, solidPose, normal, offset, manifold_->getContactBreakingThreshold());
+      nearCorners(*solid, solidPose, normal, offset, manifold_->getContactBreakingThreshold(),
+                  {solidWrap->getCollisionObject(), planeWrap->getCollisionObject(), info.m_timeStep});
   if (near.empty()) {
     choice_.forget();
   } else {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <BulletDynamics/Dynamics/btRigidBody.h>
+
 #include "physics/ContactResult.h"
 
 namespace tabletop {
@@ -37,13 +39,20 @@ std::vector<btVector3> solidCorners(const btConvexShape& solid, const btVector3&
 }
 
 std::vector<NearCorner> nearCorners(const btConvexShape& solid, const btTransform& pose, const btVector3& normal,
-                                    btScalar offset, btScalar threshold) {
+                                    btScalar offset, btScalar threshold, const Approach& approach) {
+  const btRigidBody* moving = btRigidBody::upcast(approach.solid);
+  const btRigidBody* support = btRigidBody::upcast(approach.support);
+  const auto velocity = [](const btRigidBody* body, const btVector3& at) {
+    return body ? body->getVelocityInLocalPoint(at - body->getCenterOfMassPosition()) : btVector3(0, 0, 0);
+  };
   std::vector<NearCorner> near;
   const std::vector<btVector3> corners = solidCorners(solid, pose.getBasis().transpose() * -normal);
   for (int c = 0; c < static_cast<int>(corners.size()); ++c) {
     const btVector3 vertex = pose * corners[static_cast<std::size_t>(c)];
     const btScalar distance = normal.dot(vertex) - offset;
-    if (distance <= threshold) near.push_back({c, distance, vertex});
+    if (distance > threshold) continue;
+    const btScalar closing = normal.dot(velocity(moving, vertex) - velocity(support, vertex));
+    near.push_back({c, distance, vertex, distance + std::min(closing, btScalar(0)) * approach.timeStep});
   }
   return near;
 }
@@ -52,7 +61,7 @@ void addCornerPoints(btManifoldResult& result, const std::vector<NearCorner>& ch
                      bool supportFirst) {
   auto* distinct = dynamic_cast<ContactResult*>(&result);
   if (distinct) distinct->setEachPointDistinct(true);
-  for (const auto& [corner, distance, vertex] : chosen) {
+  for (const auto& [corner, distance, vertex, arrival] : chosen) {
     if (supportFirst) {
       result.addContactPoint(-normal, vertex, distance);
     } else {
@@ -67,21 +76,26 @@ std::vector<NearCorner> CornerChoice::choose(const btConvexShape& solid, std::ve
   solid.getAabb(btTransform::getIdentity(), low, high);
   const btVector3 size = high - low;
   const btScalar band = 0.05 * std::min({size.x(), size.y(), size.z()});
-  btScalar lowest = BT_LARGE_FLOAT;
-  for (const NearCorner& c : near) lowest = std::min(lowest, c.distance);
-  near.erase(std::remove_if(near.begin(), near.end(), [&](const NearCorner& c) { return c.distance > lowest + band; }),
+  btScalar lowest = BT_LARGE_FLOAT, lowestArrival = BT_LARGE_FLOAT;
+  for (const NearCorner& c : near) lowest = std::min(lowest, c.distance), lowestArrival = std::min(lowestArrival, c.arrival);
+  near.erase(std::remove_if(near.begin(), near.end(),
+                            [&](const NearCorner& c) { return std::min(c.distance, c.arrival) > lowest + band; }),
              near.end());
   const std::size_t wanted = std::min<std::size_t>(MANIFOLD_CACHE_SIZE, near.size());
 
   std::vector<NearCorner> chosen;
-  btScalar keptLowest = BT_LARGE_FLOAT;
+  btScalar keptLowest = BT_LARGE_FLOAT, keptArrival = BT_LARGE_FLOAT;
   for (const int k : kept_) {
     const auto found = std::find_if(near.begin(), near.end(), [&](const NearCorner& c) { return c.corner == k; });
     if (found == near.end()) break;
     chosen.push_back(*found);
     keptLowest = std::min(keptLowest, found->distance);
+    keptArrival = std::min(keptArrival, found->arrival);
   }
-  if (chosen.size() == kept_.size() && chosen.size() == wanted && keptLowest <= lowest + kReach) return chosen;
+  if (chosen.size() == kept_.size() && chosen.size() == wanted && keptLowest <= lowest + kReach &&
+      keptArrival <= lowestArrival + kReach) {
+    return chosen;
+  }
 
   // Afresh: the lowest first, then each the farthest from those chosen.
   chosen.assign(1, *std::find_if(near.begin(), near.end(),
