@@ -248,16 +248,20 @@ void ActiveSetSolver::findProfile(const double* a, int n, const RowBodies* rowBo
   }
 }
 
-bool ActiveSetSolver::factor(const double* a, int n) {
+std::size_t ActiveSetSolver::layOutProfile() {
   const int m = static_cast<int>(rows_.size());
   start_.resize(m);
   std::size_t total = 0;
   for (int i = 0; i < m; ++i) {
-    const int j = first_[i];
-    start_[i] = total;  // L(i, j) is l_[start_[i] + j - first_[i]]
-    total += static_cast<std::size_t>(i - j + 1);
+    start_[i] = total;  // row i's entry in column j is at start_[i] + j - first_[i]
+    total += static_cast<std::size_t>(i - first_[i] + 1);
   }
-  l_.resize(total);
+  return total;
+}
+
+bool ActiveSetSolver::factor(const double* a, int n) {
+  const int m = static_cast<int>(rows_.size());
+  l_.resize(layOutProfile());
   for (int i = 0; i < m; ++i) {
     const double* row = a + static_cast<std::size_t>(rows_[i]) * n;
     double* li = l_.data() + start_[i];
@@ -292,12 +296,7 @@ bool ActiveSetSolver::factorSliding(const double* a, int n, const btVectorXu& hi
     }
     return v;
   };
-  start_.resize(m);
-  std::size_t total = 0;
-  for (int i = 0; i < m; ++i) {
-    start_[i] = total;
-    total += static_cast<std::size_t>(i - first_[i] + 1);
-  }
+  const std::size_t total = layOutProfile();
   l_.resize(total);
   u_.resize(total);
   // Doolittle along the profile: row i of L (unit diagonal) and column i

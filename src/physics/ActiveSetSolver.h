@@ -94,6 +94,9 @@ class ActiveSetSolver : public btMLCPSolverInterface {
   // Finds where each row of rows_ starts along the profile (first_), from
   // the rows' bodies when given, else by scanning A.
   void findProfile(const double* a, int n, const RowBodies* rowBodies);
+  // Sets where each row of rows_ starts in the factor's storage (start_),
+  // from its profile; returns the storage's length.
+  std::size_t layOutProfile();
   // Factors A's rows rows_ (in that order) along their profile into l_;
   // false at a non-positive pivot.
   bool factor(const double* a, int n);
