@@ -16,6 +16,9 @@ constexpr int kRimPoints = 32;  // a cylinder's rims, as points
 // to the corner that comes first in the solid's own order.
 constexpr btScalar kLevel = 1e-6;
 
+// A kept point this near a chosen corner (m, on the solid) is that corner.
+constexpr btScalar kSameCorner = 1e-6;
+
 }  // namespace
 
 std::vector<btVector3> solidCorners(const btConvexShape& solid, const btVector3& down) {
@@ -52,16 +55,34 @@ std::vector<NearCorner> nearCorners(const btConvexShape& solid, const btTransfor
     const btScalar distance = normal.dot(vertex) - offset;
     if (distance > threshold) continue;
     const btScalar closing = normal.dot(velocity(moving, vertex) - velocity(support, vertex));
-    near.push_back({c, distance, vertex, distance + std::min(closing, btScalar(0)) * approach.timeStep});
+    near.push_back({c, distance, vertex, distance + std::min(closing, btScalar(0)) * approach.timeStep,
+                    distance < normal.dot(pose.getOrigin()) - offset,
+                    corners[static_cast<std::size_t>(c)].y() > 0 ? 1 : 0});
   }
   return near;
 }
 
 void addCornerPoints(btManifoldResult& result, const std::vector<NearCorner>& chosen, const btVector3& normal,
                      bool supportFirst) {
+  // A point kept from an earlier step at a corner not chosen now goes
+  // first: with the manifold full, Bullet keeps the four points spanning
+  // the largest area, and it dropped a corner just chosen for an old one.
+  if (btPersistentManifold* manifold = result.getPersistentManifold()) {
+    const btCollisionObject* solid = supportFirst ? result.getBody1Internal() : result.getBody0Internal();
+    const bool solidIsA = manifold->getBody0() == solid;
+    const btTransform& pose = solid->getWorldTransform();
+    for (int i = manifold->getNumContacts() - 1; i >= 0; --i) {
+      const btManifoldPoint& kept = manifold->getContactPoint(i);
+      const btVector3 at = pose * (solidIsA ? kept.m_localPointA : kept.m_localPointB);
+      const bool chosenAgain = std::any_of(chosen.begin(), chosen.end(), [&](const NearCorner& c) {
+        return (c.point - at).length2() <= kSameCorner * kSameCorner;
+      });
+      if (!chosenAgain) manifold->removeContactPoint(i);
+    }
+  }
   auto* distinct = dynamic_cast<ContactResult*>(&result);
   if (distinct) distinct->setEachPointDistinct(true);
-  for (const auto& [corner, distance, vertex, arrival] : chosen) {
+  for (const auto& [corner, distance, vertex, arrival, below, end] : chosen) {
     if (supportFirst) {
       result.addContactPoint(-normal, vertex, distance);
     } else {
@@ -76,10 +97,22 @@ std::vector<NearCorner> CornerChoice::choose(const btConvexShape& solid, std::ve
   solid.getAabb(btTransform::getIdentity(), low, high);
   const btVector3 size = high - low;
   const btScalar band = 0.05 * std::min({size.x(), size.y(), size.z()});
+  const auto level = [](const NearCorner& c) { return std::min(c.distance, c.arrival); };
   btScalar lowest = BT_LARGE_FLOAT, lowestArrival = BT_LARGE_FLOAT;
   for (const NearCorner& c : near) lowest = std::min(lowest, c.distance), lowestArrival = std::min(lowestArrival, c.arrival);
+  // The lowest corner of each end (the solid's own -y and +y halves: a
+  // cylinder's rims, a box's end faces) that lies below the centre: a body
+  // lying on its side rests on both, however far one end tilts out of the
+  // band.
+  int rimLowest[2] = {-1, -1};
+  for (int i = 0; i < static_cast<int>(near.size()); ++i) {
+    int& at = rimLowest[near[i].end];
+    if (near[i].below && (at < 0 || level(near[i]) < level(near[at]) - kLevel)) at = i;
+  }
+  for (int& at : rimLowest) at = at < 0 ? -1 : near[at].corner;
+  const auto rim = [&](const NearCorner& c) { return c.corner == rimLowest[0] || c.corner == rimLowest[1]; };
   near.erase(std::remove_if(near.begin(), near.end(),
-                            [&](const NearCorner& c) { return std::min(c.distance, c.arrival) > lowest + band; }),
+                            [&](const NearCorner& c) { return level(c) > lowest + band && !rim(c); }),
              near.end());
   const std::size_t wanted = std::min<std::size_t>(MANIFOLD_CACHE_SIZE, near.size());
 
@@ -97,20 +130,26 @@ std::vector<NearCorner> CornerChoice::choose(const btConvexShape& solid, std::ve
     return chosen;
   }
 
-  // Afresh: the lowest first, then each the farthest from those chosen.
+  // Afresh: the lowest first; then, each the farthest from those chosen,
+  // the ends' lowest; then the rest.
   chosen.assign(1, *std::find_if(near.begin(), near.end(),
                                  [&](const NearCorner& c) { return c.distance <= lowest + kLevel; }));
-  while (chosen.size() < wanted) {
-    std::size_t best = 0;
-    btScalar farthest = -1;
-    for (std::size_t i = 0; i < near.size(); ++i) {
-      btScalar closest = BT_LARGE_FLOAT;
-      for (const NearCorner& c : chosen) closest = std::min(closest, (near[i].point - c.point).length());
-      if (closest > farthest + kLevel) farthest = closest, best = i;
+  const auto spread = [&](const auto& allowed) {
+    while (chosen.size() < wanted) {
+      std::size_t best = 0;
+      btScalar farthest = -1;
+      for (std::size_t i = 0; i < near.size(); ++i) {
+        if (!allowed(near[i])) continue;
+        btScalar closest = BT_LARGE_FLOAT;
+        for (const NearCorner& c : chosen) closest = std::min(closest, (near[i].point - c.point).length());
+        if (closest > farthest + kLevel) farthest = closest, best = i;
+      }
+      if (farthest <= kLevel) return;
+      chosen.push_back(near[best]);
     }
-    if (farthest <= kLevel) break;
-    chosen.push_back(near[best]);
-  }
+  };
+  spread(rim);
+  spread([](const NearCorner&) { return true; });
   kept_.clear();
   for (const NearCorner& c : chosen) kept_.push_back(c.corner);
   return chosen;
