@@ -104,15 +104,15 @@ std::vector<NearCorner> CornerChoice::choose(const btConvexShape& solid, std::ve
   // cylinder's rims, a box's end faces) that lies below the centre: a body
   // lying on its side rests on both, however far one end tilts out of the
   // band.
-  int rimLowest[2] = {-1, -1};
+  int endLowest[2] = {-1, -1};
   for (int i = 0; i < static_cast<int>(near.size()); ++i) {
-    int& at = rimLowest[near[i].end];
+    int& at = endLowest[near[i].end];
     if (near[i].below && (at < 0 || level(near[i]) < level(near[at]) - kLevel)) at = i;
   }
-  for (int& at : rimLowest) at = at < 0 ? -1 : near[at].corner;
-  const auto rim = [&](const NearCorner& c) { return c.corner == rimLowest[0] || c.corner == rimLowest[1]; };
+  for (int& at : endLowest) at = at < 0 ? -1 : near[at].corner;
+  const auto endsLowest = [&](const NearCorner& c) { return c.corner == endLowest[0] || c.corner == endLowest[1]; };
   near.erase(std::remove_if(near.begin(), near.end(),
-                            [&](const NearCorner& c) { return level(c) > lowest + band && !rim(c); }),
+                            [&](const NearCorner& c) { return level(c) > lowest + band && !endsLowest(c); }),
              near.end());
   const std::size_t wanted = std::min<std::size_t>(MANIFOLD_CACHE_SIZE, near.size());
 
@@ -148,7 +148,7 @@ std::vector<NearCorner> CornerChoice::choose(const btConvexShape& solid, std::ve
       chosen.push_back(near[best]);
     }
   };
-  spread(rim);
+  spread(endsLowest);
   spread([](const NearCorner&) { return true; });
   kept_.clear();
   for (const NearCorner& c : chosen) kept_.push_back(c.corner);
