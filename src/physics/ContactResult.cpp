@@ -130,19 +130,25 @@ void ContactResult::addContactPoint(const btVector3& foundNormal, const btVector
   point.m_index0 = swapped ? m_index1 : m_index0;
   point.m_index1 = swapped ? m_index0 : m_index1;
 
-  const auto taken = [&](int index) {
+  const auto foundNow = [&](int index) {
     const std::pair<const btPersistentManifold*, int> key(&manifold, index);
-    return distinct_ && std::find(found_.begin(), found_.end(), key) != found_.end();
+    return std::find(found_.begin(), found_.end(), key) != found_.end();
   };
   const int kept = keptPointWithin(
       manifold, point,
-      mergeRadius(*a.getCollisionShape(), *b.getCollisionShape(), manifold.getContactBreakingThreshold()), taken);
+      mergeRadius(*a.getCollisionShape(), *b.getCollisionShape(), manifold.getContactBreakingThreshold()),
+      [&](int index) { return distinct_ && foundNow(index); });
   if (kept >= 0) {
+    // Two points found in this pass and within the merge radius are one:
+    // the deeper stays. Kept in the order found, a cube tipping over the
+    // table's edge kept its near point on one side and its far point on
+    // the other, and left the edge rolling.
+    if (!distinct_ && foundNow(kept) && manifold.getContactPoint(kept).getDistance() <= depth) return;
     manifold.replaceContactPoint(point, kept);
-    if (distinct_) found_.emplace_back(&manifold, kept);
+    if (!foundNow(kept)) found_.emplace_back(&manifold, kept);
   } else {
     const int added = manifold.addManifoldPoint(point);
-    if (distinct_ && !taken(added)) found_.emplace_back(&manifold, added);
+    if (!foundNow(added)) found_.emplace_back(&manifold, added);
   }
 }
 

@@ -10,7 +10,8 @@ namespace tabletop {
 /// Where the narrow phase puts the contact points it finds: Bullet's
 /// btManifoldResult, but a new point replaces a kept one only within the
 /// merge radius, half the smallest extent of either shape (mergeRadius()),
-/// not within the manifold's breaking threshold.
+/// not within the manifold's breaking threshold; of two points found in one
+/// pass within it, the deeper stays, not the later.
 ///
 /// Bullet uses one distance for three things: how far ahead of touching a
 /// point is made (a speculative contact), how far its two sides may part or
@@ -51,7 +52,9 @@ class ContactResult : public btManifoldResult {
 
  private:
   bool distinct_ = false;
-  std::vector<std::pair<const btPersistentManifold*, int>> found_;  // added while distinct, by index
+  // Points added since the result was made or distinctness last changed,
+  // by manifold and index.
+  std::vector<std::pair<const btPersistentManifold*, int>> found_;
 };
 
 /// Carries warm-start impulses over Bullet's compound algorithm, which

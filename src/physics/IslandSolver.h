@@ -102,6 +102,12 @@ class IslandSolver : public btMLCPSolver {
                                              btPersistentManifold** manifolds, int numManifolds,
                                              btTypedConstraint** constraints, int numConstraints,
                                              const btContactSolverInfo& info, btIDebugDraw* debugDrawer) override;
+  // One sweep, then each friction impulse held within its cone
+  // (holdFrictionInCones).
+  btScalar solveSingleIteration(int iteration, btCollisionObject** bodies, int numBodies,
+                                btPersistentManifold** manifolds, int numManifolds, btTypedConstraint** constraints,
+                                int numConstraints, const btContactSolverInfo& info,
+                                btIDebugDraw* debugDrawer) override;
 
   bool solveMLCP(const btContactSolverInfo& info) override;
   /// The island's problem, as Bullet's own makes it (the same b, bounds,
@@ -116,6 +122,11 @@ class IslandSolver : public btMLCPSolver {
   enum class Way { Sweep, Pivot, LongSweeps };
   Way chooseWay(btPersistentManifold** manifolds, int numManifolds, int numConstraints) const;
   void dropSlidingCrossFriction(double timeStep);
+  // After the sweeps: each friction impulse within its point's final cone
+  // (mu times the normal impulse), the bodies' velocities changed to match.
+  // A sweep leaves a friction row untouched while its normal impulse is
+  // zero, so friction taken while the normal pressed stayed after it let go.
+  void holdFrictionInCones();
   // Pivots the whole island's problem; once more, raised, if that fails.
   bool solveWholeIsland(const btContactSolverInfo& info);
 
