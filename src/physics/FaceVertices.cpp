@@ -51,15 +51,19 @@ void FaceVertices::processCollision(const btCollisionObjectWrapper* body0, const
     return;
   }
   solid_ = -1;
-  manifold_->clearManifold();
-  choice_.forget();
   if (!otherwise_) {
     btCollisionAlgorithmConstructionInfo construction(m_dispatcher, 1);
     construction.m_manifold = nullptr;  // the constructor leaves it unset
     otherwise_ = otherwiseFunc_.CreateCollisionAlgorithm(construction, body0, body1);
   }
   otherwise_->processCollision(body0, body1, info, result);
-  if (box0 && box1) clipApart(body0, body1, result);
+  if (box0 && box1) {
+    clipApart(body0, body1, result);
+  } else if (addCornersOverFace(box0 ? body0 : body1, box0 ? body1 : body0, box0, info.m_timeStep, result)) {
+    return;
+  }
+  manifold_->clearManifold();
+  choice_.forget();
 }
 
 void FaceVertices::clipApart(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
@@ -85,8 +89,8 @@ void FaceVertices::clipApart(const btCollisionObjectWrapper* body0, const btColl
   result->refreshContactPoints();
 }
 
-bool FaceVertices::touchFace(const btCollisionObjectWrapper* boxWrap, const btCollisionObjectWrapper* solidWrap,
-                             bool boxFirst, btScalar timeStep, btManifoldResult* result) {
+FaceVertices::Face FaceVertices::outerFace(const btCollisionObjectWrapper* boxWrap,
+                                           const btCollisionObjectWrapper* solidWrap, btScalar timeStep) const {
   const auto* box = static_cast<const btBoxShape*>(boxWrap->getCollisionShape());
   const auto* solid = static_cast<const btConvexShape*>(solidWrap->getCollisionShape());
   const btTransform& boxPose = boxWrap->getWorldTransform();
@@ -95,43 +99,76 @@ bool FaceVertices::touchFace(const btCollisionObjectWrapper* boxWrap, const btCo
 
   // The face the solid lies farthest out from, along its normal: where it
   // rests if it rests on the box.
-  int axis = 0;
+  Face face;
   btScalar side = 1, separation = -BT_LARGE_FLOAT;
   for (int i = 0; i < 3; ++i) {
     for (const btScalar s : {btScalar(1), btScalar(-1)}) {
       const btVector3 n = boxPose.getBasis().getColumn(i) * s;
       const btVector3 lowest = solidPose * solid->localGetSupportingVertex(solidPose.getBasis().transpose() * -n);
       const btScalar apart = n.dot(lowest - boxPose.getOrigin()) - half[i];
-      if (apart > separation) separation = apart, axis = i, side = s;
+      if (apart > separation) separation = apart, face.axis = i, side = s;
     }
   }
-  const btVector3 normal = boxPose.getBasis().getColumn(axis) * side;
-  const btScalar offset = normal.dot(boxPose.getOrigin()) + half[axis];
-  if (normal.dot(solidPose.getOrigin()) <= offset) return false;  // its centre is not out over the face
+  face.normal = boxPose.getBasis().getColumn(face.axis) * side;
+  const btScalar offset = face.normal.dot(boxPose.getOrigin()) + half[face.axis];
+  if (face.normal.dot(solidPose.getOrigin()) <= offset) return face;  // its centre is not out over the face
+  face.near = nearCorners(*solid, solidPose, face.normal, offset, manifold_->getContactBreakingThreshold(),
+                          {solidWrap->getCollisionObject(), boxWrap->getCollisionObject(), timeStep});
+  face.out = true;
+  return face;
+}
 
-  std::vector<NearCorner> near =
-      nearCorners(*solid, solidPose, normal, offset, manifold_->getContactBreakingThreshold(),
-                  {solidWrap->getCollisionObject(), boxWrap->getCollisionObject(), timeStep});
-  for (const NearCorner& c : near) {
-    // Over the face: within its edges along the two other axes.
-    const btVector3 local = boxPose.invXform(c.point);
-    for (int j = 0; j < 3; ++j) {
-      if (j != axis && std::abs(local[j]) > half[j] + kOverEdge) return false;
-    }
+bool FaceVertices::overFace(const btCollisionObjectWrapper* boxWrap, const Face& face, const NearCorner& corner) {
+  const btVector3 half = static_cast<const btBoxShape*>(boxWrap->getCollisionShape())->getHalfExtentsWithMargin();
+  const btVector3 local = boxWrap->getWorldTransform().invXform(corner.point);
+  for (int j = 0; j < 3; ++j) {
+    if (j != face.axis && std::abs(local[j]) > half[j] + kOverEdge) return false;
+  }
+  return true;
+}
+
+bool FaceVertices::touchFace(const btCollisionObjectWrapper* boxWrap, const btCollisionObjectWrapper* solidWrap,
+                             bool boxFirst, btScalar timeStep, btManifoldResult* result) {
+  Face face = outerFace(boxWrap, solidWrap, timeStep);
+  if (!face.out) return false;
+  for (const NearCorner& c : face.near) {
+    if (!overFace(boxWrap, face, c)) return false;
   }
   result->setPersistentManifold(manifold_);
   const int solidBody = boxFirst ? 1 : 0;
   if (solidBody != solid_) choice_.forget();  // the kept corners were the other body's
   solid_ = solidBody;
-  if (near.empty()) {
+  if (face.near.empty()) {
     choice_.forget();
   } else {
-    addCornerPoints(*result, choice_.choose(*solid, std::move(near)), normal, boxFirst);
+    const auto* solid = static_cast<const btConvexShape*>(solidWrap->getCollisionShape());
+    addCornerPoints(*result, choice_.choose(*solid, std::move(face.near)), face.normal, boxFirst);
   }
   result->refreshContactPoints();
   // Every point is found again each step it touches: one kept from an
   // earlier step that has slid is stale.
   dropDriftedPoints(*manifold_);
+  return true;
+}
+
+bool FaceVertices::addCornersOverFace(const btCollisionObjectWrapper* boxWrap,
+                                      const btCollisionObjectWrapper* solidWrap, bool boxFirst, btScalar timeStep,
+                                      btManifoldResult* result) {
+  Face face = outerFace(boxWrap, solidWrap, timeStep);
+  std::vector<NearCorner> over;
+  if (face.out) {
+    for (const NearCorner& c : face.near) {
+      if (overFace(boxWrap, face, c)) over.push_back(c);
+    }
+  }
+  if (over.empty()) return false;
+  btPersistentManifold* otherwise = result->getPersistentManifold();
+  result->setPersistentManifold(manifold_);
+  const auto* solid = static_cast<const btConvexShape*>(solidWrap->getCollisionShape());
+  addCornerPoints(*result, choice_.choose(*solid, std::move(over)), face.normal, boxFirst);
+  result->refreshContactPoints();
+  dropDriftedPoints(*manifold_);
+  result->setPersistentManifold(otherwise);
   return true;
 }
 

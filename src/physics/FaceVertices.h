@@ -1,5 +1,7 @@
 #pragma once
 
+#include <vector>
+
 #include <btBulletCollisionCommon.h>
 #include <BulletCollision/CollisionDispatch/btActivatingCollisionAlgorithm.h>
 
@@ -14,7 +16,8 @@ namespace tabletop {
 /// (PlaneVertices, CornerChoice), so a cylinder or a cone slides on the
 /// table as it does on the floor. Otherwise (the solid reaches over the
 /// face's edge, or meets the box at an edge or a corner) Bullet's
-/// algorithm for the pair finds the points.
+/// algorithm for the pair finds the points, and a cylinder's or a cone's
+/// corners that are over the face are added beside them.
 ///
 /// Bullet's algorithms found a standing cylinder's face on the table by
 /// GJK at three small turns, and a cone's by clipping its 32-sided base,
@@ -50,6 +53,27 @@ class FaceVertices : public btActivatingCollisionAlgorithm {
   // `timeStep` (s) is the coming step's, over which corners close.
   bool touchFace(const btCollisionObjectWrapper* boxWrap, const btCollisionObjectWrapper* solidWrap, bool boxFirst,
                  btScalar timeStep, btManifoldResult* result);
+  // The box's face the solid lies farthest out from, and, if the solid's
+  // centre is out over its plane, the solid's corners near it.
+  struct Face {
+    btVector3 normal;
+    int axis = 0;
+    bool out = false;
+    std::vector<NearCorner> near;
+  };
+  Face outerFace(const btCollisionObjectWrapper* boxWrap, const btCollisionObjectWrapper* solidWrap,
+                 btScalar timeStep) const;
+  static bool overFace(const btCollisionObjectWrapper* boxWrap, const Face& face, const NearCorner& corner);
+  // A cylinder or a cone that reaches over the face's edge: Bullet's
+  // algorithm for the pair finds one point a step (GJK), where the two are
+  // nearest. The corners over the face within the breaking threshold are
+  // chosen as on a face (CornerChoice) into this algorithm's own manifold,
+  // beside Bullet's, so that the rest of a base swinging down onto the
+  // face is seen before it arrives: a cone struck onto a box's edge landed
+  // on one rim point, turned about it, and its far rim sank 10 mm into the
+  // box within the step, unseen. False if no corner is over the face.
+  bool addCornersOverFace(const btCollisionObjectWrapper* boxWrap, const btCollisionObjectWrapper* solidWrap,
+                          bool boxFirst, btScalar timeStep, btManifoldResult* result);
   void clearOtherwise();
   // Two boxes a hair apart where neither rests on the other's face (a cube
   // tipping over the table's edge, lifted a nanometre by the last solve):
