@@ -16,7 +16,9 @@
 // friction impulse in its cone after every sweep: 12 left).
 //
 // Not yet held: at 1.6 m/s and 1 kHz every run still turns, at 0.01 to
-// 0.1 rad/s, with the direct solver too; not traced.
+// 0.1 rad/s, with the direct solver too: a step-to-step oscillation of
+// the edge points' rows held at the mean grows a rounding-sized sideways
+// spin (docs/bullet-corrections.md, "Left").
 
 #include <cmath>
 #include <cstdio>
