@@ -126,6 +126,9 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   std::unordered_map<const btCollisionObject*, SlipStop> slipShare_;
   SlidingContacts sliding_;  // contacts whose friction was at its limit in it
   std::vector<btVector3> startVelocities_;
+  std::vector<btVector3> startSpins_;    // rad/s, read with startVelocities_
+  std::vector<btTransform> startPoses_;  // each body's at the part's start
+  std::unordered_set<const btCollisionObject*> meanTurn_;  // bodies with rows held at the mean
   CarriedImpulses carried_;  // per non-static body, at the step's start
   PartStart partStart_;      // the part's start, while a slip may turn in it
   // The contact whose slip turned round or stopped where the last part was

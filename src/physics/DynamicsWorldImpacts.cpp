@@ -196,6 +196,7 @@ void DynamicsWorld::resolveTouchingImpacts(btContactSolverInfo& solverInfo) {
   // The second-order update reads the part's smooth change from here.
   for (int i = 0; i < m_nonStaticRigidBodies.size() && i < static_cast<int>(startVelocities_.size()); ++i) {
     startVelocities_[static_cast<std::size_t>(i)] = m_nonStaticRigidBodies[i]->getLinearVelocity();
+    startSpins_[static_cast<std::size_t>(i)] = m_nonStaticRigidBodies[i]->getAngularVelocity();
   }
 }
 

@@ -239,8 +239,12 @@ double ImpactScan::earliestSeparatedImpact(btOverlappingPairCache& pairs, double
   return earliest;
 }
 
-void ImpactScan::holdMeanVelocity(double length, std::vector<std::pair<btManifoldPoint*, btScalar>>& saved) const {
-  const auto free = [&](const btCollisionObject* o) { return !o->isStaticOrKinematicObject() && !held(o); };
+void ImpactScan::holdMeanVelocity(double length, const std::unordered_set<const btCollisionObject*>& stopping,
+                                  std::vector<std::pair<btManifoldPoint*, btScalar>>& saved,
+                                  std::unordered_set<const btCollisionObject*>& bodies) const {
+  const auto free = [&](const btCollisionObject* o) {
+    return !o->isStaticOrKinematicObject() && !held(o) && stopping.count(o) == 0;
+  };
   for (int m = 0; m < dispatcher_.getNumManifolds(); ++m) {
     btPersistentManifold& manifold = *dispatcher_.getManifoldByIndexInternal(m);
     for (int p = 0; p < manifold.getNumContacts(); ++p) {
@@ -252,6 +256,7 @@ void ImpactScan::holdMeanVelocity(double length, std::vector<std::pair<btManifol
       if (!(mean > gap)) continue;
       saved.emplace_back(&point, point.getDistance());
       point.setDistance(mean);
+      bodies.insert({manifold.getBody0(), manifold.getBody1()});
     }
   }
 }

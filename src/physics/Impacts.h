@@ -107,8 +107,11 @@ class ImpactScan {
   /// has them: a support makes their motion other than their forces say,
   /// and holding the mean let pushed bodies chatter and a standing
   /// cylinder creep. `saved` gets the points and their gaps, to be put
-  /// back after the solve.
-  void holdMeanVelocity(double length, std::vector<std::pair<btManifoldPoint*, btScalar>>& saved) const;
+  /// back after the solve, and `bodies` the bodies at them, whose turn
+  /// is then to follow the mean rate as well (DynamicsWorld).
+  void holdMeanVelocity(double length, const std::unordered_set<const btCollisionObject*>& stopping,
+                        std::vector<std::pair<btManifoldPoint*, btScalar>>& saved,
+                        std::unordered_set<const btCollisionObject*>& bodies) const;
 
  private:
   bool held(const btCollisionObject* object) const;

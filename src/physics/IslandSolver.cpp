@@ -63,8 +63,10 @@ IslandSolver::Way IslandSolver::chooseWay(btPersistentManifold** manifolds, int 
     }
   }
   // A slide with a point sunk in (a landing) is left to the sweeps' split
-  // impulse.
-  return fits && slides && !sunk ? Way::Pivot : Way::Sweep;
+  // impulse. A resting island with a point sunk in is pivoted: ten sweeps
+  // over a cone lying on its side left its narrow end closing into the
+  // table, 0.17 mm deeper every other step (0.86 mm at 60 Hz).
+  return fits && (slides != sunk) ? Way::Pivot : Way::Sweep;
 }
 
 void IslandSolver::convertContacts(btPersistentManifold** manifolds, int numManifolds,

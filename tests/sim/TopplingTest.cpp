@@ -78,11 +78,12 @@ double depthUnder(const Shape& body, double support) {
 }
 
 // How deep the lowest corner may go, m. A cylinder rolling on its rims at
-// 60 Hz goes 0.11 to 0.51 mm under (0.04 to 0.06 mm at 240 Hz, 0.01 mm at
-// 1 kHz: it converges with the step); what the 60 Hz step misses as the
-// rims' points come down one after another is not yet traced.
+// 60 Hz goes 0.08 to 0.26 mm under (0.02 to 0.05 mm at 240 Hz, 0.01 mm at
+// 1 kHz: it converges with the step). Before a body whose rows are held at
+// the mean also turned by its mean rate (DynamicsWorld), 0.11 to 0.51 mm.
+// What is left is not traced.
 double tolerated(const Topple& c) {
-  return std::string(c.shape) == "cylinder" && c.rate < 100 ? 6e-4 : kTolerance;
+  return std::string(c.shape) == "cylinder" && c.rate < 100 ? 3e-4 : kTolerance;
 }
 
 class Toppling : public testing::TestWithParam<Topple> {};
