@@ -363,6 +363,9 @@ SlipTurn DynamicsWorld::solvePart(btContactSolverInfo& solverInfo, const ImpactS
   const double g = getGravity().length();
   const std::vector<Slip> slipping =
       secondOrder_ ? slippingPoints(*dispatcher, g, partLength_, kSlipShare) : std::vector<Slip>{};
+  // A body one of those points may stop keeps Bullet's rows on its other
+  // points: held at the mean, they let a cone's rim, landing over a box's
+  // edge, go 0.75 mm into the box at 60 Hz (0.29 mm without).
   meanTurn_.clear();
   std::unordered_set<const btCollisionObject*> stopping;
   for (const auto& [manifold, point] : closing) stopping.insert({manifold->getBody0(), manifold->getBody1()});

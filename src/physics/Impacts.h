@@ -106,9 +106,12 @@ class ImpactScan {
   /// stops them). Two bodies that something touches are left as Bullet
   /// has them: a support makes their motion other than their forces say,
   /// and holding the mean let pushed bodies chatter and a standing
-  /// cylinder creep. `saved` gets the points and their gaps, to be put
-  /// back after the solve, and `bodies` the bodies at them, whose turn
-  /// is then to follow the mean rate as well (DynamicsWorld).
+  /// cylinder creep. Nor are those of the bodies in `stopping`, which a
+  /// point of theirs may stop at once: such a body moves by its end
+  /// velocity over the part (DynamicsWorld), which Bullet's rows hold.
+  /// `saved` gets the points and their gaps, to be put back after the
+  /// solve, and `bodies` the bodies at them, whose turn is then to follow
+  /// the mean rate as well (DynamicsWorld).
   void holdMeanVelocity(double length, const std::unordered_set<const btCollisionObject*>& stopping,
                         std::vector<std::pair<btManifoldPoint*, btScalar>>& saved,
                         std::unordered_set<const btCollisionObject*>& bodies) const;
