@@ -63,18 +63,20 @@ DynamicsWorld::DynamicsWorld(btDispatcher* dispatcher, btBroadphaseInterface* br
 // Bullet calls this first in a step, before any velocity changes: the
 // velocities the second-order update starts from are read here.
 void DynamicsWorld::applyGravity() {
-  if (smoothAcceleration_ > 0) {
-    startVelocities_.resize(static_cast<std::size_t>(m_nonStaticRigidBodies.size()));
-    for (int i = 0; i < m_nonStaticRigidBodies.size(); ++i) {
-      startVelocities_[static_cast<std::size_t>(i)] = m_nonStaticRigidBodies[i]->getLinearVelocity();
-    }
-    startSpins_.resize(startVelocities_.size());
-    for (int i = 0; i < m_nonStaticRigidBodies.size(); ++i) {
-      startSpins_[static_cast<std::size_t>(i)] = m_nonStaticRigidBodies[i]->getAngularVelocity();
-    }
-  }
+  if (smoothAcceleration_ > 0) saveStartVelocities();
   btDiscreteDynamicsWorld::applyGravity();
   applyRollingResistance();
+}
+
+void DynamicsWorld::saveStartVelocities() {
+  const auto n = static_cast<std::size_t>(m_nonStaticRigidBodies.size());
+  startVelocities_.resize(n);
+  startSpins_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const btRigidBody& body = *m_nonStaticRigidBodies[static_cast<int>(i)];
+    startVelocities_[i] = body.getLinearVelocity();
+    startSpins_[i] = body.getAngularVelocity();
+  }
 }
 
 namespace {
@@ -233,12 +235,16 @@ void DynamicsWorld::step(double dt) {
 
 void DynamicsWorld::integrateTransforms(btScalar) {
   const btScalar timeStep = partLength_;
-  startPoses_.resize(static_cast<std::size_t>(m_nonStaticRigidBodies.size()));
-  for (int i = 0; i < m_nonStaticRigidBodies.size(); ++i) {
-    startPoses_[static_cast<std::size_t>(i)] = m_nonStaticRigidBodies[i]->getWorldTransform();
+  const bool smooth = secondOrder_ && smoothAcceleration_ > 0;
+  // The poses a mean turn starts from, kept only when a body turns so.
+  if (smooth && !meanTurn_.empty()) {
+    startPoses_.resize(static_cast<std::size_t>(m_nonStaticRigidBodies.size()));
+    for (int i = 0; i < m_nonStaticRigidBodies.size(); ++i) {
+      startPoses_[static_cast<std::size_t>(i)] = m_nonStaticRigidBodies[i]->getWorldTransform();
+    }
   }
   btDiscreteDynamicsWorld::integrateTransforms(timeStep);
-  if (!secondOrder_ || !(smoothAcceleration_ > 0)) return;
+  if (!smooth) return;
   const btScalar limit = smoothAcceleration_ * timeStep;
   for (int i = 0; i < m_nonStaticRigidBodies.size(); ++i) {
     btRigidBody* body = m_nonStaticRigidBodies[i];

@@ -78,6 +78,9 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
 
  private:
   void applyRollingResistance();
+  // Each body's velocity and spin now, which the second-order update takes
+  // as the part's start (startVelocities_, startSpins_).
+  void saveStartVelocities();
 
   bool markImpacts(double timeStep);
   void forgetImpacts();
@@ -127,7 +130,7 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   SlidingContacts sliding_;  // contacts whose friction was at its limit in it
   std::vector<btVector3> startVelocities_;
   std::vector<btVector3> startSpins_;    // rad/s, read with startVelocities_
-  std::vector<btTransform> startPoses_;  // each body's at the part's start
+  std::vector<btTransform> startPoses_;  // each body's at the part's start, when one turns by its mean rate
   std::unordered_set<const btCollisionObject*> meanTurn_;  // bodies with rows held at the mean
   CarriedImpulses carried_;  // per non-static body, at the step's start
   PartStart partStart_;      // the part's start, while a slip may turn in it

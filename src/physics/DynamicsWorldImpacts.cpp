@@ -194,10 +194,7 @@ void DynamicsWorld::resolveTouchingImpacts(btContactSolverInfo& solverInfo) {
     }
   }
   // The second-order update reads the part's smooth change from here.
-  for (int i = 0; i < m_nonStaticRigidBodies.size() && i < static_cast<int>(startVelocities_.size()); ++i) {
-    startVelocities_[static_cast<std::size_t>(i)] = m_nonStaticRigidBodies[i]->getLinearVelocity();
-    startSpins_[static_cast<std::size_t>(i)] = m_nonStaticRigidBodies[i]->getAngularVelocity();
-  }
+  if (smoothAcceleration_ > 0) saveStartVelocities();
 }
 
 // Marks the points whose bodies close along the normal faster than smooth

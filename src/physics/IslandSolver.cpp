@@ -62,11 +62,14 @@ IslandSolver::Way IslandSolver::chooseWay(btPersistentManifold** manifolds, int 
       slides = slides || (sliding && !uncoupled(*manifold));
     }
   }
-  // A slide with a point sunk in (a landing) is left to the sweeps' split
-  // impulse. A resting island with a point sunk in is pivoted: ten sweeps
-  // over a cone lying on its side left its narrow end closing into the
-  // table, 0.17 mm deeper every other step (0.86 mm at 60 Hz).
-  return fits && (slides != sunk) ? Way::Pivot : Way::Sweep;
+  // Pivoted: a slide with no point sunk in, and a resting island with one
+  // (ten sweeps over a cone lying on its side left its narrow end closing
+  // into the table, 0.17 mm deeper every other step: 0.86 mm at 60 Hz).
+  // Swept: a slide with a point sunk in (a landing), left to the sweeps'
+  // split impulse, and a resting island with none, which they hold.
+  const bool clearSlide = slides && !sunk;
+  const bool sunkRest = !slides && sunk;
+  return fits && (clearSlide || sunkRest) ? Way::Pivot : Way::Sweep;
 }
 
 void IslandSolver::convertContacts(btPersistentManifold** manifolds, int numManifolds,
