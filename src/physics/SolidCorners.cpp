@@ -24,6 +24,7 @@ constexpr btScalar kSameCorner = 1e-6;
 std::vector<btVector3> solidCorners(const btConvexShape& solid, const btVector3& down) {
   std::vector<btVector3> out;
   if (solid.getShapeType() == CYLINDER_SHAPE_PROXYTYPE) {
+    out.reserve(2 * kRimPoints);
     const btVector3 half = static_cast<const btCylinderShape&>(solid).getHalfExtentsWithMargin();
     for (int i = 0; i < kRimPoints; ++i) {
       const double a = 2.0 * SIMD_PI * i / kRimPoints;
@@ -33,6 +34,7 @@ std::vector<btVector3> solidCorners(const btConvexShape& solid, const btVector3&
   }
   const auto& polyhedron = static_cast<const btPolyhedralConvexShape&>(solid);
   const btScalar outset = solid.getShapeType() == BOX_SHAPE_PROXYTYPE ? btScalar(0) : solid.getMargin();
+  out.reserve(static_cast<std::size_t>(polyhedron.getNumVertices()));
   for (int i = 0; i < polyhedron.getNumVertices(); ++i) {
     btVector3 v;
     polyhedron.getVertex(i, v);
@@ -48,8 +50,9 @@ std::vector<NearCorner> nearCorners(const btConvexShape& solid, const btTransfor
   const auto velocity = [](const btRigidBody* body, const btVector3& at) {
     return body ? body->getVelocityInLocalPoint(at - body->getCenterOfMassPosition()) : btVector3(0, 0, 0);
   };
-  std::vector<NearCorner> near;
   const std::vector<btVector3> corners = solidCorners(solid, pose.getBasis().transpose() * -normal);
+  std::vector<NearCorner> near;
+  near.reserve(corners.size());
   for (int c = 0; c < static_cast<int>(corners.size()); ++c) {
     const btVector3 vertex = pose * corners[static_cast<std::size_t>(c)];
     const btScalar distance = normal.dot(vertex) - offset;
@@ -117,6 +120,7 @@ std::vector<NearCorner> CornerChoice::choose(const btConvexShape& solid, std::ve
   const std::size_t wanted = std::min<std::size_t>(MANIFOLD_CACHE_SIZE, near.size());
 
   std::vector<NearCorner> chosen;
+  chosen.reserve(wanted);
   btScalar keptLowest = BT_LARGE_FLOAT, keptArrival = BT_LARGE_FLOAT;
   for (const int k : kept_) {
     const auto found = std::find_if(near.begin(), near.end(), [&](const NearCorner& c) { return c.corner == k; });
