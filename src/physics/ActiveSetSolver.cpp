@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <iterator>
 
 namespace tabletop {
 namespace {
@@ -183,13 +184,15 @@ void ActiveSetSolver::findNeighbours(const double* a, int n, const RowBodies* ro
       bodyPoints_[body].push_back(k);
     }
   }
+  // Each body's points are listed in rising order, so a point's
+  // neighbours are the sorted union of its (at most two) bodies' lists.
+  const std::vector<int> none;
   for (int k = 0; k < numPoints; ++k) {
     std::vector<int>& mine = neighbours_[k];
-    for (const int body : (*rowBodies)[points_[k]]) {
-      if (body >= 0) mine.insert(mine.end(), bodyPoints_[body].begin(), bodyPoints_[body].end());
-    }
-    std::sort(mine.begin(), mine.end());
-    mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
+    const auto& [first, second] = (*rowBodies)[points_[k]];
+    const std::vector<int>& one = first >= 0 ? bodyPoints_[first] : none;
+    const std::vector<int>& other = second >= 0 && second != first ? bodyPoints_[second] : none;
+    std::set_union(one.begin(), one.end(), other.begin(), other.end(), std::back_inserter(mine));
     mine.erase(std::remove(mine.begin(), mine.end(), k), mine.end());
   }
 }
