@@ -129,14 +129,16 @@ bool IslandSolver::solveMLCP(const btContactSolverInfo& info) {
   btMatrixXu& a = split_.a;
   btVectorXu &b = split_.b, &x = split_.x, &lo = split_.lo, &hi = split_.hi;
   a.resize(n, n);
-  a.setZero();
   b.resize(n), x.resize(n), lo.resize(n), hi.resize(n);
   split_.bodies.resize(n);
+  const int all = m_A.cols();
+  const double* whole = m_A.getBufferPointer();
+  double* normalRows = a.getBufferPointerWritable();
   for (int r = 0; r < n; ++r) {
-    for (int c = 0; c < n; ++c) {
-      const btScalar v = m_A(normals[r], normals[c]);
-      if (v != 0) a.setElem(r, c, v);
-    }
+    const double* from = whole + static_cast<std::size_t>(normals[r]) * all;
+    double* to = normalRows + static_cast<std::size_t>(r) * n;
+    // Every entry written, a zero of either sign as +0.
+    for (int c = 0; c < n; ++c) to[c] = from[normals[c]] != 0 ? from[normals[c]] : 0.0;
     b[r] = m_bSplit[normals[r]];
     split_.bodies[r] = rowBodies_[normals[r]];
     x[r] = 0;
