@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <sstream>
+#include <utility>
 
 #include "core/Broadphase.h"
 #include "measure/ModelSwitch.h"
@@ -212,6 +213,25 @@ std::map<std::string, double> exponents(const std::vector<ScalePoint>& points) {
   return out;
 }
 
+DriftMatch lowestRateHolding(const Scenario& scenario, const StabilityReport& own, double drift) {
+  const auto holds = [drift](const StabilityReport& r) { return r.complete && r.worstDrift <= drift; };
+  DriftMatch match;
+  // Without weight nothing presses on a support, and a centre that stays
+  // put says nothing of the step (free rotation keeps its centre at any).
+  if (scenario.settings.gravity <= 0 || !holds(own)) return match;
+  const double ownRate = 1.0 / scenario.settings.timestep;
+  match = {ownRate, own};
+  for (const double rate : kLowerRates) {
+    if (rate >= ownRate * (1.0 - 1e-9)) continue;
+    Settings settings = scenario.settings;
+    settings.timestep = 1.0 / rate;
+    StabilityReport r = probeStability(scenario, settings);
+    if (!holds(r)) break;
+    match = {rate, std::move(r)};
+  }
+  return match;
+}
+
 std::vector<HardPoint> measureHard(const std::string& dir, const MeasureHooks& hooks) {
   std::vector<std::string> files;
   std::error_code ec;
@@ -227,8 +247,10 @@ std::vector<HardPoint> measureHard(const std::string& dir, const MeasureHooks& h
     Settings sweeps = s.settings;
     sweeps.solver = ContactSolver::SequentialImpulse;
     sweeps.iterations = kHardSweeps;
-    points.push_back({s.name, s.settings, probeStability(s, s.settings), probeStability(s, sweeps),
-                      runPlainBullet(s, s.settings.timestep, s.settings.duration, 1)});
+    StabilityReport own = probeStability(s, s.settings);
+    DriftMatch match = lowestRateHolding(s, own, kPeerDrift);
+    points.push_back({s.name, s.settings, std::move(own), probeStability(s, sweeps),
+                      runPlainBullet(s, s.settings.timestep, s.settings.duration, 1), std::move(match)});
     hooks.advance(s.name);
   }
   return points;

@@ -64,6 +64,32 @@ struct BaselinePoint {
 std::vector<BaselinePoint> measureBaseline(std::vector<BenchScene>& scenes, const std::vector<double>& rates,
                                            int repeats, const MeasureHooks& hooks);
 
+/// The drift a peer reaches on a resting hard case, m: MuJoCo 2.2.2 at its
+/// defaults holds the ten-cube stack to 0.7 mm over 60 s at 120 Hz, for
+/// about 8 ms per simulated second (at 60 Hz it drifts 16 mm). A resting
+/// case's cost is compared with a peer's at this drift, not at a rate.
+inline constexpr double kPeerDrift = 0.7e-3;
+
+/// The rates a resting hard case is tried at below its own, from the
+/// highest down, Hz: where a lower step still holds the drift, the same
+/// accuracy costs fewer steps.
+inline constexpr double kLowerRates[] = {120.0, 60.0, 30.0, 20.0, 15.0, 10.0};
+
+/// A hard case at the lowest rate that still holds it to a drift.
+struct DriftMatch {
+  double rate = 0;         ///< Hz; 0 when not even the scene's own rate holds the drift
+  StabilityReport report;  ///< the run at that rate (the scene's own run when it is the lowest)
+};
+
+/// The lowest of kLowerRates (or the scene's own rate) at which `scenario`,
+/// at its own settings otherwise, keeps every centre within `drift` m of its
+/// start and runs to its end: tried from the highest down, stopping at the
+/// first rate that does not hold. `own` is the run at the scene's own rate;
+/// a case it does not hold (one that moves, say), or a weightless one, gets
+/// rate 0 and no more runs. Drift alone decides, so the rate found is the same on every
+/// machine; the cost is whatever that run took.
+DriftMatch lowestRateHolding(const Scenario& scenario, const StabilityReport& own, double drift);
+
 /// One hard case, run once (docs/hard-cases.md).
 struct HardPoint {
   std::string scene;
@@ -71,6 +97,7 @@ struct HardPoint {
   StabilityReport report;  ///< at the scene's settings (the solver chosen per island by default)
   StabilityReport sweeps;  ///< the same with sequential impulses, kHardSweeps iterations
   PlainRun plain;          ///< the scene in Bullet's own default pipeline, same step and duration
+  DriftMatch atPeerDrift;  ///< the lowest rate holding kPeerDrift, and its cost
 };
 
 /// The sweeps a hard case is also run with: Bullet's default count.
@@ -79,7 +106,8 @@ inline constexpr int kHardSweeps = 10;
 /// Every scene in the folder `dir` (its .json files, by name) run once
 /// and probed for stability, and again with sequential impulses at
 /// kHardSweeps iterations and in Bullet's own default pipeline (one timed
-/// run after a warm-up). Throws ScenarioError for a bad file.
+/// run after a warm-up), and at the lowest rate that holds kPeerDrift.
+/// Throws ScenarioError for a bad file.
 std::vector<HardPoint> measureHard(const std::string& dir, const MeasureHooks& hooks);
 
 }  // namespace tabletop

@@ -2,6 +2,11 @@
 
 #include "measure/BenchRuns.h"
 
+#include <algorithm>
+#include <iterator>
+#include <set>
+#include <string>
+
 #include <gtest/gtest.h>
 
 #include "scenario/ScenarioLoader.h"
@@ -50,6 +55,56 @@ TEST(BenchRuns, TimesEachSceneAgainstBulletsOwnPipeline) {
     EXPECT_NEAR(p.simulated, 0.4, 1.0 / p.rate) << p.rate;
     EXPECT_GT(p.tabletopMs, 0.0);
     EXPECT_GT(p.bulletMs, 0.0);
+  }
+}
+
+Scenario hardCase(const std::string& name, double duration) {
+  Scenario s = ScenarioLoader::loadFile(std::string(TABLETOP_SOURCE_DIR) + "/scenarios/hard/" + name + ".json");
+  s.settings.duration = duration;
+  return s;
+}
+
+// The lowest rate holding a drift: the one found holds it, the next lower
+// one tried does not (or none is lower), for goals the 5 mm cube meets at
+// different rates over 2 s; a stack of ten cubes holds MuJoCo's 0.7 mm
+// down to the lowest rate tried; a case that moves more than the goal, or
+// has no weight, gets none and its own run back untouched.
+TEST(BenchRuns, FindsTheLowestRateThatHoldsADrift) {
+  const Scenario tiny = hardCase("tiny_cube", 2.0);
+  Settings own = tiny.settings;
+  own.timestep = 1.0 / 60.0;
+  Scenario at60 = tiny;
+  at60.settings = own;
+  const StabilityReport ownRun = probeStability(at60, own);
+  std::set<double> found;  // Hz: the goals were chosen to be met at three different rates
+  for (double goal : {5e-6, 1e-5, 3e-5}) {
+    SCOPED_TRACE(goal);
+    const DriftMatch m = lowestRateHolding(at60, ownRun, goal);
+    ASSERT_GT(m.rate, 0.0);
+    found.insert(m.rate);
+    EXPECT_LE(m.report.worstDrift, goal);
+    EXPECT_NEAR(1.0 / m.report.simulated * m.report.steps, m.rate, 1e-6 * m.rate);
+    const double* lower = std::find_if(std::begin(kLowerRates), std::end(kLowerRates),
+                                       [&](double r) { return r < m.rate * (1 - 1e-9); });
+    if (lower != std::end(kLowerRates)) {
+      Settings below = own;
+      below.timestep = 1.0 / *lower;
+      EXPECT_GT(probeStability(at60, below).worstDrift, goal) << *lower << " Hz held it too";
+    }
+  }
+  EXPECT_EQ(found.size(), 3u);
+
+  const Scenario stack = hardCase("tall_stack_10", 60.0);
+  const DriftMatch held = lowestRateHolding(stack, probeStability(stack, stack.settings), kPeerDrift);
+  EXPECT_EQ(held.rate, kLowerRates[std::size(kLowerRates) - 1]);
+  EXPECT_LE(held.report.worstDrift, kPeerDrift);
+  EXPECT_NEAR(held.report.simulated, 60.0, 1e-9);
+
+  for (const char* name : {"fast_small_sphere", "free_rotation"}) {
+    SCOPED_TRACE(name);
+    const Scenario s = hardCase(name, 0.5);
+    const DriftMatch none = lowestRateHolding(s, probeStability(s, s.settings), kPeerDrift);
+    EXPECT_EQ(none.rate, 0.0);
   }
 }
 

@@ -1,9 +1,11 @@
 // Resting load, solved per island (IslandSolver, the default `auto`): a tower
 // of cubes at rest on the table or the floor stays where statics puts it,
 // cube k's centre at support + (k + 1/2) size, for any height, size, mass
-// ratio and rate, with no setting but the rate. Tolerances: 0.1 mm on
-// every centre, at the end and at worst over 10 s (the goal is
-// 1 mm over 60 s at 60 Hz).
+// ratio and rate from 10 Hz, with no setting but the rate. Tolerances:
+// 0.1 mm on every centre, at the end and at worst over 10 s (the goal is
+// 1 mm over 60 s at 60 Hz). That the slow rates hold too is what lets
+// `bench --hard` compare a stack's cost with a peer's at the same drift
+// (lowestRateHolding).
 
 #include <algorithm>
 #include <cmath>
@@ -72,7 +74,7 @@ TEST(RestingLoad, TowersOfEqualCubesStandAtTheirStaticHeights) {
   for (int cubes : {2, 5, 10}) {
     for (double size : {0.05, 0.2}) {
       for (const char* support : {"table", "ground"}) {
-        for (double rate : {30.0, 60.0, 240.0}) {
+        for (double rate : {10.0, 20.0, 30.0, 60.0, 240.0}) {
           const Tower t{cubes, size, 1.0, 1.0, support, rate};
           EXPECT_LE(worstOffset(t), 1e-4) << describe(t);
         }
@@ -87,7 +89,7 @@ TEST(RestingLoad, TowersOfEqualCubesStandAtTheirStaticHeights) {
 TEST(RestingLoad, MassRatiosOfAThousandRestBothWays) {
   for (double ratio : {1e-3, 1e3}) {
     for (const char* support : {"table", "ground"}) {
-      for (double rate : {30.0, 60.0, 240.0}) {
+      for (double rate : {10.0, 20.0, 30.0, 60.0, 240.0}) {
         const Tower t{2, 0.1, 1.0, ratio, support, rate};
         EXPECT_LE(worstOffset(t), 1e-4) << describe(t);
       }
