@@ -18,21 +18,22 @@ bool ActiveSetSolver::solveMLCP(const btMatrixXu& A, const btVectorXu& b, btVect
                                 int /*numIterations*/, bool /*useSparsity*/) {
   // Neither the guess nor Dantzig's pivoting (the fallback) uses the
   // iteration count or the sparsity flag.
-  return solveMLCP(A, b, x, lo, hi, limitDependency, nullptr);
+  return solve(A, b, x, lo, hi, limitDependency, nullptr) != Answer::kNone;
 }
 
-bool ActiveSetSolver::solveMLCP(const btMatrixXu& A, const btVectorXu& b, btVectorXu& x, const btVectorXu& lo,
-                                const btVectorXu& hi, const btAlignedObjectArray<int>& limitDependency,
-                                const RowBodies* rowBodies) {
+ActiveSetSolver::Answer ActiveSetSolver::solve(const btMatrixXu& A, const btVectorXu& b, btVectorXu& x,
+                                               const btVectorXu& lo, const btVectorXu& hi,
+                                               const btAlignedObjectArray<int>& limitDependency,
+                                               const RowBodies* rowBodies) {
   if (b.rows() > 0) {
     if (rowBodies != nullptr && rowBodies->size() != static_cast<std::size_t>(b.rows())) rowBodies = nullptr;
     if (solveByGuess(A, b, lo, hi, limitDependency, rowBodies, x)) {
       ++solved_;
-      return true;
+      return Answer::kByGuess;
     }
     ++handedOn_;
   }
-  return fallback_.solveMLCP(A, b, x, lo, hi, limitDependency, 0);
+  return fallback_.solveMLCP(A, b, x, lo, hi, limitDependency, 0) ? Answer::kByFallback : Answer::kNone;
 }
 
 bool ActiveSetSolver::solveByGuess(const btMatrixXu& A, const btVectorXu& b, const btVectorXu& lo,

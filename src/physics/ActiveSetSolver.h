@@ -56,9 +56,13 @@ class ActiveSetSolver : public btMLCPSolverInterface {
   /// the points' neighbours and the factor's profile come from the bodies,
   /// not from scanning A for zeros (a tenth of the ten-cube stack's step).
   using RowBodies = std::vector<std::array<int, 2>>;
-  /// As above, with the rows' bodies (nullptr, or not one per row: scan A).
-  bool solveMLCP(const btMatrixXu& A, const btVectorXu& b, btVectorXu& x, const btVectorXu& lo, const btVectorXu& hi,
-                 const btAlignedObjectArray<int>& limitDependency, const RowBodies* rowBodies);
+  /// Which way a problem was answered: by the guess, by the fallback, or
+  /// not at all (the fallback failed too).
+  enum class Answer { kByGuess, kByFallback, kNone };
+  /// As above, with the rows' bodies (nullptr, or not one per row: scan A),
+  /// saying which way it was answered.
+  Answer solve(const btMatrixXu& A, const btVectorXu& b, btVectorXu& x, const btVectorXu& lo, const btVectorXu& hi,
+               const btAlignedObjectArray<int>& limitDependency, const RowBodies* rowBodies);
 
   /// How many problems were solved by the guess, and how many handed on.
   long solved() const { return solved_; }

@@ -102,12 +102,9 @@ void IslandSolver::dropSlidingCrossFriction(double timeStep) {
 }
 
 bool IslandSolver::solveWholeIsland(const btContactSolverInfo& info) {
-  const long guessedBefore = activeSet_.solved();
-  if (activeSet_.solveMLCP(m_A, m_b, m_x, m_lo, m_hi, m_limitDependencies, &rowBodies_)) {
-    guessed_ = activeSet_.solved() > guessedBefore;
-    return true;
-  }
-  guessed_ = false;
+  const ActiveSetSolver::Answer answer = activeSet_.solve(m_A, m_b, m_x, m_lo, m_hi, m_limitDependencies, &rowBodies_);
+  guessed_ = answer == ActiveSetSolver::Answer::kByGuess;
+  if (answer != ActiveSetSolver::Answer::kNone) return true;
   raised_ = m_A;
   for (int i = 0; i < raised_.rows(); ++i) raised_.setElem(i, i, raised_(i, i) * (1.0 + kRetryRaise));
   m_x.setZero();
@@ -157,7 +154,7 @@ bool IslandSolver::solveMLCP(const btContactSolverInfo& info) {
   btAlignedObjectArray<int>& none = split_.noLimits;
   none.resize(n);
   for (int r = 0; r < n; ++r) none[r] = -1;
-  if (n > 0 && activeSet_.solveMLCP(a, b, x, lo, hi, none, &split_.bodies)) {
+  if (n > 0 && activeSet_.solve(a, b, x, lo, hi, none, &split_.bodies) != ActiveSetSolver::Answer::kNone) {
     for (int r = 0; r < n; ++r) m_xSplit[normals[r]] = x[r];
   }
   return true;

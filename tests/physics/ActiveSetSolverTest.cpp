@@ -217,7 +217,8 @@ TEST(ActiveSetSolver, SolvesRestingStacksByTheGuess) {
     EXPECT_EQ(solver.solved(), 2 * trial + 1) << count << " boxes: handed on";  // two solves a trial
     EXPECT_LT(violation(p, x), 1e-12) << count << " boxes";
     btVectorXu fromBodies = p.x;
-    ASSERT_TRUE(solver.solveMLCP(p.A, p.b, fromBodies, p.lo, p.hi, p.dependency, &p.bodies));
+    ASSERT_EQ(solver.solve(p.A, p.b, fromBodies, p.lo, p.hi, p.dependency, &p.bodies),
+              ActiveSetSolver::Answer::kByGuess);
     for (int i = 0; i < p.b.rows(); ++i) EXPECT_EQ(fromBodies[i], x[i]) << count << " boxes, row " << i;
     btVectorXu pivoted = p.x;
     ASSERT_TRUE(dantzig.solveMLCP(p.A, p.b, pivoted, p.lo, p.hi, p.dependency, 0));
@@ -311,7 +312,8 @@ TEST(ActiveSetSolver, SolvesSlidingStacksByTheGuess) {
     const int count = 1 + trial % 12;
     Problem p = slidingStackProblem(count, random);
     btVectorXu x = p.x;
-    ASSERT_TRUE(solver.solveMLCP(p.A, p.b, x, p.lo, p.hi, p.dependency, &p.bodies)) << count << " boxes";
+    ASSERT_EQ(solver.solve(p.A, p.b, x, p.lo, p.hi, p.dependency, &p.bodies), ActiveSetSolver::Answer::kByGuess)
+        << count << " boxes";
     EXPECT_LT(violation(p, x), 1e-12) << count << " boxes";
     const int np = 4 * count;
     for (int k = np - 4; k < np; ++k) {
@@ -360,8 +362,12 @@ TEST(ActiveSetSolver, HandsOnWhatTheGuessMustNotAnswer) {
   EXPECT_FALSE(solver.solveMLCP(broken.A, broken.b, x, broken.lo, broken.hi, broken.dependency, 0));
   EXPECT_EQ(fallback.calls, 3);
   EXPECT_EQ(x[1], 0.0);
+  // Handed on with the rows' bodies, the answer says the fallback failed too.
+  EXPECT_EQ(solver.solve(joint.A, joint.b, x, joint.lo, joint.hi, joint.dependency, &joint.bodies),
+            ActiveSetSolver::Answer::kNone);
+  EXPECT_EQ(fallback.calls, 4);
   EXPECT_EQ(solver.solved(), 0);
-  EXPECT_EQ(solver.handedOn(), 3);
+  EXPECT_EQ(solver.handedOn(), 4);
 }
 
 }  // namespace
