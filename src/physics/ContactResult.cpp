@@ -93,6 +93,15 @@ double ContactResult::mergeRadius(const btCollisionShape& a, const btCollisionSh
   return std::min(breakingThreshold, kShareOfExtent * std::min(smallestExtent(a), smallestExtent(b)));
 }
 
+double ContactResult::radiusFor(const btCollisionShape& a, const btCollisionShape& b, double breakingThreshold) {
+  if (&a != radiusShapes_[0] || &b != radiusShapes_[1] || breakingThreshold != radiusThreshold_) {
+    radiusShapes_[0] = &a, radiusShapes_[1] = &b;
+    radiusThreshold_ = breakingThreshold;
+    radius_ = mergeRadius(a, b, breakingThreshold);
+  }
+  return radius_;
+}
+
 void ContactResult::addContactPoint(const btVector3& foundNormal, const btVector3& foundPoint, btScalar foundDepth) {
   btPersistentManifold& manifold = *m_manifoldPtr;
   // The manifold's body A may be this result's body 1.
@@ -136,7 +145,7 @@ void ContactResult::addContactPoint(const btVector3& foundNormal, const btVector
   };
   const int kept = keptPointWithin(
       manifold, point,
-      mergeRadius(*a.getCollisionShape(), *b.getCollisionShape(), manifold.getContactBreakingThreshold()),
+      radiusFor(*a.getCollisionShape(), *b.getCollisionShape(), manifold.getContactBreakingThreshold()),
       [&](int index) { return distinct_ && foundNow(index); });
   if (kept >= 0) {
     // Two points found in this pass and within the merge radius are one:

@@ -51,6 +51,14 @@ class ContactResult : public btManifoldResult {
   }
 
  private:
+  // mergeRadius() for the pair of shapes the points are added for, kept
+  // while the shapes and the threshold stay the same: each point asked
+  // both shapes for their boxes (a twentieth of a sliding cube's step).
+  double radiusFor(const btCollisionShape& a, const btCollisionShape& b, double breakingThreshold);
+  const btCollisionShape* radiusShapes_[2] = {nullptr, nullptr};
+  double radiusThreshold_ = 0.0;
+  double radius_ = 0.0;
+
   bool distinct_ = false;
   // Points added since the result was made or distinctness last changed,
   // by manifold and index.
