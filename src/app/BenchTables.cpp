@@ -132,8 +132,9 @@ ResultTable hardTable(const std::vector<HardPoint>& points) {
   ResultTable t;
   t.title = "Hard cases, one run each at the scene's own settings (the solver chosen per island unless the scene "
             "names one), then with " + std::to_string(kHardSweeps) +
-            " sweeps of sequential impulses, then in Bullet's own default pipeline at the same step; a case resting within "
-            "a peer's drift (MuJoCo's defaults on the ten-cube stack at 120 Hz) also at the lowest rate that holds it";
+            " sweeps of sequential impulses, then in Bullet's own default pipeline at the same step; a case "
+            "resting within a peer's drift (MuJoCo's defaults on the ten-cube stack at 120 Hz) also at the lowest "
+            "rate that holds it";
   t.columns = {{"scene", "scene"},
                {"timestep_s", ""},
                {"", "rate [Hz]"},
@@ -184,7 +185,8 @@ ResultTable hardTable(const std::vector<HardPoint>& points) {
          cell(w.cost(), 2), errorCell(w.worstDrift, w.complete, 3),
          millimetres(w.worstPenetration), flag(w.complete, ""), cell(p.plain.costMsPerSecond, 2),
          millimetres(p.plain.worstDrift), cell(kPeerDrift, ""), matchCell(m.rate, fixed(m.rate, 0)),
-         matchCell(m.report.cost(), fixed(m.report.cost(), 2)), matchCell(m.report.worstDrift, fixed(1e3 * m.report.worstDrift, 3))});
+         matchCell(m.report.cost(), fixed(m.report.cost(), 2)),
+         matchCell(m.report.worstDrift, fixed(1e3 * m.report.worstDrift, 3))});
   }
   return t;
 }

@@ -77,7 +77,7 @@ inline constexpr double kLowerRates[] = {120.0, 60.0, 30.0, 20.0, 15.0, 10.0};
 
 /// A hard case at the lowest rate that still holds it to a drift.
 struct DriftMatch {
-  double rate = 0;         ///< Hz; 0 when not even the scene's own rate holds the drift
+  double rate = 0;         ///< Hz; 0 for a case with none (lowestRateHolding)
   StabilityReport report;  ///< the run at that rate (the scene's own run when it is the lowest)
 };
 
@@ -86,8 +86,8 @@ struct DriftMatch {
 /// start and runs to its end: tried from the highest down, stopping at the
 /// first rate that does not hold. `own` is the run at the scene's own rate;
 /// a case it does not hold (one that moves, say), or a weightless one, gets
-/// rate 0 and no more runs. Drift alone decides, so the rate found is the same on every
-/// machine; the cost is whatever that run took.
+/// rate 0 and no more runs. Drift alone decides, so the rate found is the
+/// same on every machine; the cost is whatever that run took.
 DriftMatch lowestRateHolding(const Scenario& scenario, const StabilityReport& own, double drift);
 
 /// One hard case, run once (docs/hard-cases.md).
