@@ -8,9 +8,6 @@
 namespace tabletop::rules {
 namespace {
 
-// Bodies whose vertical extents overlap by less than this do not meet
-// sideways: one rests on the other.
-constexpr double kLevelSlack = 1e-6;  // m
 // Events at one instant that keep causing each other mean a bug, not a scene.
 constexpr int kMaxEventsPerStep = 100000;
 // A drive that ends this close to an edge ends on it: report 3.4 drops an
@@ -19,25 +16,6 @@ constexpr int kMaxEventsPerStep = 100000;
 constexpr double kEdgeTie = 1e-9;  // m
 
 bool isZero(const Vec3& v) { return v.x == 0.0 && v.y == 0.0 && v.z == 0.0; }
-
-Event eventAt(double t, EventType type, const std::string& entity) {
-  Event e;
-  e.t = t;
-  e.type = type;
-  e.entity = entity;
-  return e;
-}
-
-// The outward unit normal of the edge a status names.
-Vec3 edgeNormal(EntityPositionStatus s) {
-  switch (s) {
-    case EntityPositionStatus::DropFromRightEdge: return {1, 0, 0};
-    case EntityPositionStatus::DropFromLeftEdge: return {-1, 0, 0};
-    case EntityPositionStatus::DropFromFrontEdge: return {0, 0, 1};
-    case EntityPositionStatus::DropFromBackEdge: return {0, 0, -1};
-    default: return {};
-  }
-}
 
 }  // namespace
 
@@ -249,7 +227,7 @@ void RuleEngine::handle(const Next& next) {
       }
       break;
     case Next::Kind::Strike: {
-      Event e = eventAt(now_, EventType::ContactBegin, bodies_[i].name);
+      Event e = eventNow(EventType::ContactBegin, bodies_[i].name);
       e.other = bodies_[next.other].name;
       record(e);
       strike(i, next.other, next.normal);
@@ -303,87 +281,6 @@ void RuleEngine::strike(std::size_t striker, std::size_t struck, const Vec3& n) 
   if (restLength > 0.0) own.direction = rest * (1.0 / restLength);
 }
 
-void RuleEngine::leaveTable(std::size_t i, EntityPositionStatus status) {
-  std::vector<std::size_t> group{i};
-  for (std::size_t r : riders(i)) group.push_back(r);
-  for (std::size_t k : group) {
-    bodies_[k].status = status;
-    Event e = eventAt(now_, EventType::LeavesTable, bodies_[k].name);
-    e.edge = dropEdge(status);
-    record(e);
-  }
-  if (release_) {
-    std::vector<Vec3> velocities;
-    for (std::size_t k : group) velocities.push_back(velocity(k));
-    for (std::size_t k : group) motion_[k].phase = Phase::Released;
-    for (std::size_t g = 0; g < group.size(); ++g) release_->release(group[g], velocities[g]);
-    return;
-  }
-  startClearing(i, edgeNormal(status));
-}
-
-// Moves on along the body's own direction (or straight out, when it was
-// carried there) until its footprint is past the edge whose outward normal
-// is `outward`.
-void RuleEngine::startClearing(std::size_t i, const Vec3& outward) {
-  Motion& m = motion_[i];
-  const RuleBody& b = bodies_[i];
-  const double half = std::abs(outward.x) > 0.0 ? b.footX() : b.footZ();
-  const bool moving = m.phase == Phase::Driven || m.phase == Phase::Clearing;
-  if (!moving || m.direction.dot(outward) <= 0.0) m.direction = outward;
-  m.phase = Phase::Clearing;
-  m.remaining = half / m.direction.dot(outward);
-}
-
-void RuleEngine::startFall(std::size_t i) {
-  RuleBody& b = bodies_[i];
-  Motion& m = motion_[i];
-  std::vector<bool> carried(bodies_.size(), false);
-  for (std::size_t r : riders(i)) carried[r] = true;
-  // The highest surface below the centre: the table, a body, or the ground.
-  double surface = 0.0;
-  int on = kOnGround;
-  const Vec3& c = b.position;
-  if (dropStatus(c, edges_) == EntityPositionStatus::OnTable && b.bottom() >= tableTop_ - kLevelSlack) {
-    surface = tableTop_;
-    on = kOnTable;
-  }
-  for (std::size_t k = 0; k < bodies_.size(); ++k) {
-    if (k == i || carried[k] || !onSurface(k)) continue;
-    const RuleBody& o = bodies_[k];
-    const double dx = c.x - o.position.x, dz = c.z - o.position.z;
-    const bool under = o.round() ? std::hypot(dx, dz) <= o.footX()
-                                 : std::abs(dx) <= o.footX() && std::abs(dz) <= o.footZ();
-    if (under && o.top() <= b.bottom() + kLevelSlack && o.top() > surface) {
-      surface = o.top();
-      on = static_cast<int>(k);
-    }
-  }
-  m.phase = Phase::Falling;
-  m.fallSpeed = 0.0;
-  m.landingY = surface + b.below;
-  m.landingOn = on;
-  b.support = kOnNothing;
-}
-
-void RuleEngine::land(std::size_t i) {
-  RuleBody& b = bodies_[i];
-  Motion& m = motion_[i];
-  const double shift = m.landingY - b.position.y;
-  b.position.y = m.landingY;
-  for (std::size_t r : riders(i)) bodies_[r].position.y += shift;
-  m.phase = Phase::Resting;
-  m.fallSpeed = 0.0;
-  b.support = m.landingOn;
-  if (m.landingOn == kOnGround || isDropping(b.status)) b.status = EntityPositionStatus::FinishDropSimulation;
-  for (std::size_t r : riders(i)) {
-    if (isDropping(bodies_[r].status)) bodies_[r].status = EntityPositionStatus::FinishDropSimulation;
-  }
-  Event e = eventAt(now_, EventType::Lands, b.name);
-  e.on = supportOf(m.landingOn);
-  record(e);
-}
-
 bool RuleEngine::moving(std::size_t i) const {
   const Phase p = motion_[i].phase;
   if (p == Phase::Released) return false;
@@ -396,9 +293,17 @@ void RuleEngine::noteRest() {
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
     if (motion_[i].phase == Phase::Released) continue;
     const bool moving = this->moving(i);
-    if (motion_[i].moving && !moving) record(eventAt(now_, EventType::AtRest, bodies_[i].name));
+    if (motion_[i].moving && !moving) record(eventNow(EventType::AtRest, bodies_[i].name));
     motion_[i].moving = moving;
   }
+}
+
+Event RuleEngine::eventNow(EventType type, const std::string& entity) const {
+  Event e;
+  e.t = now_;
+  e.type = type;
+  e.entity = entity;
+  return e;
 }
 
 void RuleEngine::record(Event e) { events_.push_back(std::move(e)); }
@@ -424,7 +329,7 @@ void RuleEngine::push(const Arrow& arrow, const PushMagnitude& magnitude) {
   m.direction = pushDirection(angle);
   m.remaining = magnitude.value;
 
-  Event e = eventAt(now_, EventType::Push, b.name);
+  Event e = eventNow(EventType::Push, b.name);
   e.face = arrow.face;
   e.angle = angle;
   e.step = magnitude.value;
@@ -435,7 +340,7 @@ void RuleEngine::push(const Arrow& arrow, const PushMagnitude& magnitude) {
 void RuleEngine::rotate(const std::string& entity, double degrees) {
   const std::size_t i = index(entity);
   bodies_[i].yawDegrees += degrees;
-  Event e = eventAt(now_, EventType::Rotate, entity);
+  Event e = eventNow(EventType::Rotate, entity);
   e.angle = degrees;
   record(e);
 }

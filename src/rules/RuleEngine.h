@@ -110,6 +110,10 @@ class RuleEngine : public Simulation {
     EntityPositionStatus edge = EntityPositionStatus::OnTable;  // TableEdge: which
   };
 
+  // Bodies whose vertical extents overlap by less than this do not meet
+  // sideways: one rests on the other.
+  static constexpr double kLevelSlack = 1e-6;  // m
+
   std::size_t index(const std::string& name) const;
   bool onSurface(std::size_t i) const;
   bool moving(std::size_t i) const;
@@ -126,6 +130,7 @@ class RuleEngine : public Simulation {
   std::vector<std::size_t> riders(std::size_t i) const;
   Support supportOf(int support) const;  // a RuleBody's support as a value
   void noteRest();
+  Event eventNow(EventType type, const std::string& entity) const;  // at now_
   void record(Event e);
 
   std::string mode_;
