@@ -3,6 +3,11 @@
 find_package(GTest REQUIRED)
 include(GoogleTest)
 
+# Where the tests write their files (tests/support/TempFiles.h): under the
+# build tree, not the machine's /tmp.
+set(TABLETOP_TEST_TMPDIR "${PROJECT_BINARY_DIR}/test-tmp/")
+file(MAKE_DIRECTORY "${TABLETOP_TEST_TMPDIR}")
+
 function(tabletop_test name)
   cmake_parse_arguments(ARG "" "" "SOURCES;LIBS;LABELS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
@@ -10,7 +15,8 @@ function(tabletop_test name)
   target_include_directories(${name} PRIVATE ${PROJECT_SOURCE_DIR}/tests)
   target_compile_definitions(${name} PRIVATE
     TABLETOP_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
-    TABLETOP_BINARY_DIR="${PROJECT_BINARY_DIR}")
+    TABLETOP_BINARY_DIR="${PROJECT_BINARY_DIR}"
+    TABLETOP_TEST_TMPDIR="${TABLETOP_TEST_TMPDIR}")
   set(_labels unit)
   if(ARG_LABELS)
     set(_labels ${ARG_LABELS})

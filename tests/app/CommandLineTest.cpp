@@ -178,7 +178,7 @@ TEST(CommandLine, DivergenceIsStatusThreeAndMarkedIncomplete) {
   const nlohmann::json j = onlyRun(o.out);
   EXPECT_FALSE(j["complete"].get<bool>());
   EXPECT_NE(j["failure"].get<std::string>().find("entity 'A'"), std::string::npos);
-  const std::string dir = ::testing::TempDir() + "absurd_frames";
+  const std::string dir = ::tabletop::testing::tempDir() + "absurd_frames";
   std::filesystem::remove_all(dir);
   o = run(kBin + "tabletop render " + path + " --out-dir " + dir + " --at 0,0.5 --size 64x48");
   EXPECT_EQ(o.status, 3);
@@ -220,7 +220,7 @@ int interruptRender(const std::string& dir, int signal, std::string& err) {
 // Ctrl-C stops a long render cleanly: status 130, the frames made so far
 // kept, each a whole PNG, no temporary file left and no video begun.
 TEST(CommandLine, InterruptedRenderKeepsWholeFramesAndNoTemporaries) {
-  const std::string dir = ::testing::TempDir() + "interrupted_render";
+  const std::string dir = ::tabletop::testing::tempDir() + "interrupted_render";
   std::string err;
   EXPECT_EQ(interruptRender(dir, SIGINT, err), 130) << err;
   EXPECT_EQ(lineCount(err), 1) << err;
@@ -242,7 +242,7 @@ TEST(CommandLine, InterruptedRenderKeepsWholeFramesAndNoTemporaries) {
 // A kill cannot be caught: it may leave a temporary file, but never a
 // half-written frame under a frame's name, and the next render clears it.
 TEST(CommandLine, KilledRenderLeavesNoHalfWrittenFrame) {
-  const std::string dir = ::testing::TempDir() + "killed_render";
+  const std::string dir = ::tabletop::testing::tempDir() + "killed_render";
   std::string err;
   EXPECT_EQ(interruptRender(dir, SIGKILL, err), kKilledBy + SIGKILL);
   const std::vector<std::string> frames = filesIn(dir, ".png");
@@ -262,7 +262,7 @@ TEST(CommandLine, KilledRenderLeavesNoHalfWrittenFrame) {
 
 // run --out writes its output whole, or leaves the file as it was.
 TEST(CommandLine, RunOutWritesTheFileWholeOrNotAtAll) {
-  const std::string file = ::testing::TempDir() + "run_out.json";
+  const std::string file = ::tabletop::testing::tempDir() + "run_out.json";
   std::filesystem::remove(file);
   Outcome o = run(kBin + "tabletop run --json --out " + file + " " + kScenarios + "example1_single_cube.json");
   EXPECT_EQ(o.status, 0) << o.err;
@@ -279,7 +279,7 @@ TEST(CommandLine, RunOutWritesTheFileWholeOrNotAtAll) {
 // run --trace writes a row per entity and step, from the initial state to
 // the last step, and the last rows are the final state the run prints.
 TEST(CommandLine, RunTraceWritesEveryStep) {
-  const std::string file = ::testing::TempDir() + "trace.csv";
+  const std::string file = ::tabletop::testing::tempDir() + "trace.csv";
   std::filesystem::remove(file);
   const std::string scene = kScenarios + "analytic/free_flight.json";
   Outcome o = run(kBin + "tabletop run --json --trace " + file + " " + scene);
@@ -312,7 +312,7 @@ TEST(CommandLine, RunTraceWritesEveryStep) {
 // bench sweeps the settings asked for: a table with the front marked, a
 // CSV row per setting and a plot per scene; bad options are status 2.
 TEST(CommandLine, BenchPrintsTheTableAndWritesCsvAndPlot) {
-  const std::string dir = ::testing::TempDir() + "bench_out";
+  const std::string dir = ::tabletop::testing::tempDir() + "bench_out";
   std::filesystem::remove_all(dir);
   Outcome o = run(kBin + "tabletop bench --scenarios " + kScenarios +
                   " --cases free_flight --repeats 1 --rates 60,240 --iterations 4,10 --out-dir " + dir);
@@ -445,7 +445,7 @@ TEST(CommandLine, UnknownModeAndImpossiblePushesAreStatusTwo) {
 // The check: compat and rules agree on misaligned_cubes.json,
 // bullet diverges with a reason, and the plot is written whole.
 TEST(CommandLine, CompareNamesWhereBulletDivergesAndPlotsIt) {
-  const std::string plot = ::testing::TempDir() + "tabletop_compare_" + std::to_string(getpid()) + ".png";
+  const std::string plot = ::tabletop::testing::tempDir() + "tabletop_compare_" + std::to_string(getpid()) + ".png";
   std::remove(plot.c_str());
   Outcome o = run(kBin + "tabletop compare --json " + kScenarios + "misaligned_cubes.json --plot " + plot);
   ASSERT_EQ(o.status, 0) << o.err;
@@ -475,7 +475,7 @@ TEST(CommandLine, CompareNamesWhereBulletDivergesAndPlotsIt) {
 
 // A fresh, empty directory for one test's output files.
 std::string freshDir(const std::string& name) {
-  const std::string dir = ::testing::TempDir() + name + "_" + std::to_string(getpid());
+  const std::string dir = ::tabletop::testing::tempDir() + name + "_" + std::to_string(getpid());
   std::filesystem::remove_all(dir);
   return dir;
 }

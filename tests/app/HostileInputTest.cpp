@@ -28,7 +28,7 @@ std::string scene(const std::string& name, const std::string& entity) {
 }
 
 std::string freshDir(const std::string& name) {
-  const std::string dir = ::testing::TempDir() + "hostile_" + name + "_" + std::to_string(getpid());
+  const std::string dir = ::tabletop::testing::tempDir() + "hostile_" + name + "_" + std::to_string(getpid());
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

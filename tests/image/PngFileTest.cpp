@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include "image/PngFile.h"
+#include "support/TempFiles.h"
 
 namespace tabletop {
 namespace {
@@ -14,7 +15,7 @@ namespace {
 TEST(PngFile, RoundTripsEveryPixel) {
   Image image(7, 5);
   for (std::size_t i = 0; i < image.rgb.size(); ++i) image.rgb[i] = static_cast<std::uint8_t>(i * 37);
-  const std::string path = ::testing::TempDir() + "tabletop_png_" + std::to_string(getpid()) + ".png";
+  const std::string path = ::tabletop::testing::tempDir() + "tabletop_png_" + std::to_string(getpid()) + ".png";
   writePng(image, path);
   const Image back = readPng(path);
   EXPECT_EQ(back.width, 7);
@@ -32,7 +33,7 @@ TEST(PngFile, FlipRowsPutsTheLastRowFirst) {
 }
 
 TEST(PngFile, FailuresNameTheFileAndLeaveNothing) {
-  const std::string path = ::testing::TempDir() + "no_such_directory_here/x.png";
+  const std::string path = ::tabletop::testing::tempDir() + "no_such_directory_here/x.png";
   try {
     writePng(Image(2, 2), path);
     FAIL() << "wrote into a missing directory";
@@ -40,7 +41,7 @@ TEST(PngFile, FailuresNameTheFileAndLeaveNothing) {
     EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
   }
   EXPECT_THROW(readPng(path), std::runtime_error);
-  EXPECT_THROW(writePng(Image(), ::testing::TempDir() + "empty.png"), std::runtime_error);
+  EXPECT_THROW(writePng(Image(), ::tabletop::testing::tempDir() + "empty.png"), std::runtime_error);
 }
 
 }  // namespace

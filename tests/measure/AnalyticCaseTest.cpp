@@ -201,7 +201,9 @@ TEST(AnalyticCase, StackedCubeRidesAlongOrSlipsOnWithTheExactSolve) {
       Settings sweeps = s.settings;
       sweeps.solver = ContactSolver::SequentialImpulse;
       const AnalyticResult swept = analytic->run(s, sweeps, SimulationMode::Bullet);
-      if (rate == 60.0) EXPECT_GT(swept.positionError, 5e-5) << "the sweeps hold the ride as well as the exact solve";
+      if (rate == 60.0) {
+        EXPECT_GT(swept.positionError, 5e-5) << "the sweeps hold the ride as well as the exact solve";
+      }
     }
   }
   // And the two cases differ where the closed form says they do: the rider

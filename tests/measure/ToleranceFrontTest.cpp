@@ -14,6 +14,7 @@
 #include "scenario/ScenarioError.h"
 #include "scenario/ScenarioLoader.h"
 #include "measure/AnalyticCase.h"
+#include "support/TempFiles.h"
 
 namespace tabletop {
 namespace {
@@ -69,7 +70,7 @@ TEST(ToleranceFront, ChoosesTheCheapestSettingsMeetingTheTolerancePerMotion) {
 }
 
 TEST(ToleranceFront, ABadFrontFileIsOneLineNamingFileAndPlace) {
-  const std::string file = ::testing::TempDir() + "bad_front.json";
+  const std::string file = ::tabletop::testing::tempDir() + "bad_front.json";
   std::ofstream(file) << R"({"version": 1, "cases": {"free_flight": {"front": [{"timestep": 0.01,
       "iterations": 10, "integrator": "midpoint", "cost_ms_per_s": 0.1, "error_m": 0}]}}})";
   try {
@@ -80,7 +81,7 @@ TEST(ToleranceFront, ABadFrontFileIsOneLineNamingFileAndPlace) {
     EXPECT_NE(e.lines()[0].find(file), std::string::npos) << e.lines()[0];
     EXPECT_NE(e.lines()[0].find("/cases/free_flight/front/0/integrator"), std::string::npos) << e.lines()[0];
   }
-  EXPECT_THROW(ToleranceFront::load(::testing::TempDir() + "no_such_front.json"), ScenarioError);
+  EXPECT_THROW(ToleranceFront::load(::tabletop::testing::tempDir() + "no_such_front.json"), ScenarioError);
 }
 
 // The shipped front holds every analytic case, and each of its errors is

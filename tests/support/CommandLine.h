@@ -17,6 +17,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/TempFiles.h"
+
 namespace tabletop::testing {
 
 struct Outcome {
@@ -29,25 +31,36 @@ inline const std::string kBin = std::string(TABLETOP_BINARY_DIR) + "/src/app/";
 inline const std::string kScenarios = std::string(TABLETOP_SOURCE_DIR) + "/scenarios/";
 inline const std::string kData = std::string(TABLETOP_SOURCE_DIR) + "/data/";
 
+// The text of `file`, which is then removed (a test's error file).
+inline std::string readAndRemove(const std::string& file) {
+  std::string text;
+  {
+    std::ifstream in(file);
+    text.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  std::error_code ignored;
+  std::filesystem::remove(file, ignored);
+  return text;
+}
+
 // Runs a shell command, capturing stdout, and stderr through a file.
 inline Outcome run(const std::string& command) {
   // One file per test process: CTest runs tests in parallel.
-  const std::string errFile = ::testing::TempDir() + "tabletop_stderr_" + std::to_string(getpid()) + ".txt";
+  const std::string errFile = ::tabletop::testing::tempDir() + "tabletop_stderr_" + std::to_string(getpid()) + ".txt";
   Outcome o;
-  FILE* pipe = popen((command + " 2>" + errFile).c_str(), "r");
+  FILE* pipe = popen((command + " 2>'" + errFile + "'").c_str(), "r");
   if (!pipe) return o;
   std::array<char, 4096> buffer{};
   std::size_t n;
   while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) o.out.append(buffer.data(), n);
   const int raw = pclose(pipe);
   o.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  std::ifstream in(errFile);
-  o.err.assign(std::istreambuf_iterator<char>(in), {});
+  o.err = readAndRemove(errFile);
   return o;
 }
 
 inline std::string writeTemp(const std::string& name, const std::string& text) {
-  const std::string path = ::testing::TempDir() + name;
+  const std::string path = ::tabletop::testing::tempDir() + name;
   std::ofstream(path) << text;
   return path;
 }
@@ -98,11 +111,10 @@ inline int finish(pid_t pid) {
 
 // Runs tabletop with `args` (no shell) to its end: status and errors.
 inline Outcome runArgs(const std::vector<std::string>& args) {
-  const std::string errFile = ::testing::TempDir() + "tabletop_args_stderr_" + std::to_string(getpid()) + ".txt";
+  const std::string errFile = ::tabletop::testing::tempDir() + "tabletop_args_stderr_" + std::to_string(getpid()) + ".txt";
   Outcome o;
   o.status = finish(start(args, errFile));
-  std::ifstream in(errFile);
-  o.err.assign(std::istreambuf_iterator<char>(in), {});
+  o.err = readAndRemove(errFile);
   return o;
 }
 

@@ -21,6 +21,7 @@
 #include "image/Image.h"
 #include "core/Colour.h"
 #include "support/ColourProbe.h"
+#include "support/TempFiles.h"
 
 extern char** environ;
 
@@ -147,7 +148,7 @@ class ViewerWindow : public ::testing::Test {
   }
 
   WindowDump dump(const std::string& window) {
-    const std::string file = ::testing::TempDir() + "tabletop_window_" + std::to_string(getpid()) + ".xwd";
+    const std::string file = ::tabletop::testing::tempDir() + "tabletop_window_" + std::to_string(getpid()) + ".xwd";
     output("xwd -silent -id " + window + " -out " + file);
     WindowDump d = readXwd(file);
     std::remove(file.c_str());
