@@ -1,8 +1,6 @@
 #include "physics/ContactDispatcher.h"
 
-#include "physics/ContactResult.h"
 #include "physics/ShapeKinds.h"
-
 
 namespace tabletop {
 
@@ -60,7 +58,8 @@ void ContactDispatcher::nearCallback(btBroadphasePair& pair, btCollisionDispatch
     pair.m_algorithm = dispatcher.findAlgorithm(&wrap0, &wrap1, nullptr, BT_CONTACT_POINT_ALGORITHMS);
   }
   if (pair.m_algorithm == nullptr) return;
-  ContactResult result(&wrap0, &wrap1);
+  // Only a ContactDispatcher sets this callback.
+  ContactResult result(&wrap0, &wrap1, static_cast<ContactDispatcher&>(dispatcher).found_);
   // Two spheres: Bullet's algorithm reports them only once they overlap,
   // unless asked for points this far apart. Every other pair is found up
   // to the breaking threshold ahead of touching, and an impact between

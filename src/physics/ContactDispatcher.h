@@ -5,6 +5,7 @@
 #include <btBulletCollisionCommon.h>
 #include <BulletCollision/CollisionDispatch/btConvexConvexAlgorithm.h>
 
+#include "physics/ContactResult.h"
 #include "physics/FaceVertices.h"
 #include "physics/PlaneVertices.h"
 
@@ -36,6 +37,8 @@ class ContactDispatcher : public btCollisionDispatcher {
   std::unique_ptr<btConvexConvexAlgorithm::CreateFunc> multipoint_;
   PlaneVertices::CreateFunc planeVertices_;
   std::unique_ptr<FaceVertices::CreateFunc> cylinderOnBox_, hullOnBox_, boxOnBox_;
+  // The points each pair's ContactResult finds, one storage for all.
+  ContactResult::FoundPoints found_;
 
   // Bullet's default near callback with a ContactResult in place of its
   // btManifoldResult.

@@ -32,8 +32,9 @@ double featureApart2(const btManifoldPoint& p, const btVector3& localA, const bt
 
 // The kept point of `manifold` nearest `point` and within `radius` of it,
 // on the moving body, or -1; none that `taken` says was found in this pass.
+template <typename Taken>
 int keptPointWithin(const btPersistentManifold& manifold, const btManifoldPoint& point, double radius,
-                    const std::function<bool(int)>& taken) {
+                    const Taken& taken) {
   int nearest = -1;
   double nearestSquared = radius * radius;
   for (int p = 0; p < manifold.getNumContacts(); ++p) {
@@ -86,8 +87,11 @@ bool ballOnSharpBox(const btCollisionObjectWrapper& a, const btCollisionObjectWr
 
 }  // namespace
 
-ContactResult::ContactResult(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1)
-    : btManifoldResult(body0, body1) {}
+ContactResult::ContactResult(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
+                             FoundPoints& found)
+    : btManifoldResult(body0, body1), found_(found) {
+  found_.clear();
+}
 
 double ContactResult::mergeRadius(const btCollisionShape& a, const btCollisionShape& b, double breakingThreshold) {
   return std::min(breakingThreshold, kShareOfExtent * std::min(smallestExtent(a), smallestExtent(b)));

@@ -28,7 +28,13 @@ namespace tabletop {
 /// does not call them.
 class ContactResult : public btManifoldResult {
  public:
-  ContactResult(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1);
+  /// The points added since the result was made or distinctness last
+  /// changed, by manifold and index: kept by the caller, who makes a result
+  /// for every pair in every step, so that the storage is reused.
+  using FoundPoints = std::vector<std::pair<const btPersistentManifold*, int>>;
+
+  /// Cleared here: each result starts with none found.
+  ContactResult(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1, FoundPoints& found);
 
   void addContactPoint(const btVector3& normalOnBInWorld, const btVector3& pointInWorld, btScalar depth) override;
 
@@ -60,9 +66,7 @@ class ContactResult : public btManifoldResult {
   double radius_ = 0.0;
 
   bool distinct_ = false;
-  // Points added since the result was made or distinctness last changed,
-  // by manifold and index.
-  std::vector<std::pair<const btPersistentManifold*, int>> found_;
+  FoundPoints& found_;
 };
 
 /// Carries warm-start impulses over Bullet's compound algorithm, which

@@ -80,34 +80,57 @@ struct Carried {
   BoxPiece box;
   int face;
 };
+// A body's up, against its gravity, kept while the points are of one body.
+class Up {
+ public:
+  const btVector3& of(const btRigidBody& body) {
+    if (&body != body_) body_ = &body, up_ = -body.getGravity().normalized();
+    return up_;
+  }
+
+ private:
+  const btRigidBody* body_ = nullptr;
+  btVector3 up_{0, 0, 0};
+};
 std::optional<Carried> carriedOnFace(const btPersistentManifold& manifold, const btManifoldPoint& point,
-                                     bool carriedIsA) {
+                                     bool carriedIsA, Up& up) {
   if (point.getDistance() > kOnBox) return std::nullopt;
   const btRigidBody* body = movingBody(carriedIsA ? manifold.getBody0() : manifold.getBody1());
   const btCollisionObject* support = carriedIsA ? manifold.getBody1() : manifold.getBody0();
   if (!body || body->getGravity().length2() == 0) return std::nullopt;
-  const auto box = boxAt(*support, carriedIsA ? point.getPositionWorldOnB() : point.getPositionWorldOnA());
-  if (!box) return std::nullopt;
   // The normal points from B to A; carried from below, within 45 degrees.
   const btVector3 normal = carriedIsA ? point.m_normalWorldOnB : -point.m_normalWorldOnB;
-  if (normal.dot(-body->getGravity().normalized()) < 0.7) return std::nullopt;
+  if (normal.dot(up.of(*body)) < 0.7) return std::nullopt;
+  const auto box = boxAt(*support, carriedIsA ? point.getPositionWorldOnB() : point.getPositionWorldOnA());
+  if (!box) return std::nullopt;
   const btVector3 local = box->place.getBasis().transpose() * normal;
   const int face = local.closestAxis();
   if (std::fabs(local[face]) < 0.999) return std::nullopt;  // an edge or a corner, not a face
   return Carried{body, support, *box, face};
 }
 
+// Whether two carried points are of one body on one face of one box.
+bool sameFace(const Carried& a, const Carried& b) {
+  return a.body == b.body && a.support == b.support && a.face == b.face && a.box.place == b.box.place &&
+         a.box.half == b.box.half;
+}
+
 }  // namespace
 
 double earliestFaceExit(btDispatcher& dispatcher, double horizon) {
   double earliest = horizon;
+  // The time depends on the body, the box and the face alone, which the
+  // points of a contact share: each is timed once.
+  std::optional<Carried> timed;
+  Up up;
   for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
     const btPersistentManifold& manifold = *dispatcher.getManifoldByIndexInternal(m);
     for (int p = 0; p < manifold.getNumContacts(); ++p) {
       const btManifoldPoint& point = manifold.getContactPoint(p);
       for (const bool carriedIsA : {true, false}) {  // either body may be the one carried
-        const auto carried = carriedOnFace(manifold, point, carriedIsA);
-        if (!carried) continue;
+        const auto carried = carriedOnFace(manifold, point, carriedIsA, up);
+        if (!carried || (timed && sameFace(*carried, *timed))) continue;
+        timed = carried;
         const BoxPiece& box = carried->box;
         const btVector3 centre = box.place.invXform(carried->body->getCenterOfMassPosition());
         const btVector3 v = relativeVelocity(*carried->body, *carried->support, box);
@@ -201,25 +224,31 @@ void holdEdgeCurvature(btDispatcher& dispatcher, double length, double stepLengt
 
 void holdEdgeLevers(btDispatcher& dispatcher, double length, std::vector<HeldPlace>& saved) {
   constexpr double kOnSide = 1e-7;  // m: a clipped point lies on the edge to rounding
+  Up up;
   for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
     btPersistentManifold& manifold = *dispatcher.getManifoldByIndexInternal(m);
     for (int p = 0; p < manifold.getNumContacts(); ++p) {
       btManifoldPoint& point = manifold.getContactPoint(p);
       for (const bool carriedIsA : {true, false}) {
-        const auto carried = carriedOnFace(manifold, point, carriedIsA);
+        const auto carried = carriedOnFace(manifold, point, carriedIsA, up);
         if (!carried) continue;
+        const BoxPiece& box = carried->box;
+        const int face = carried->face;
+        // Only a point on an edge of the support's face (most are inside
+        // it: looked at first, as it costs the least).
+        const btVector3 there = box.place.invXform(carriedIsA ? point.getPositionWorldOnB() : point.getPositionWorldOnA());
+        bool onEdge = false;
+        for (int i = 0; i < 3; ++i) onEdge = onEdge || (i != face && std::fabs(there[i]) >= box.half[i] - kOnSide);
+        if (!onEdge) continue;
         const btVector3& onBody = carriedIsA ? point.getPositionWorldOnA() : point.getPositionWorldOnB();
         const auto own = boxAt(*carried->body, onBody);
         if (!own) continue;
-        const BoxPiece& box = carried->box;
-        const int face = carried->face;
         // A corner of the body's own box moves with it: only a point inside
         // its face, cut out by the support's edge, stays on that edge.
         const btVector3 mine = own->place.invXform(onBody);
         int corner = 0;
         for (int i = 0; i < 3; ++i) corner += std::fabs(mine[i]) >= own->half[i] - kOnSide ? 1 : 0;
         if (corner == 3) continue;
-        const btVector3 there = box.place.invXform(carriedIsA ? point.getPositionWorldOnB() : point.getPositionWorldOnA());
         const btVector3 v = relativeVelocity(*carried->body, *carried->support, box);
         btVector3 across(0, 0, 0);
         for (int i = 0; i < 3; ++i) {
