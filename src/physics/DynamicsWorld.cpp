@@ -171,6 +171,10 @@ void DynamicsWorld::performDiscreteCollisionDetection() {
 
 void DynamicsWorld::solveConstraints(btContactSolverInfo& solverInfo) {
   btDispatcher* dispatcher = getDispatcher();
+  if (dispatcher->getNumManifolds() == 0 && getBroadphase()->getOverlappingPairCache()->getNumOverlappingPairs() == 0) {
+    solveUntouched(solverInfo);
+    return;
+  }
   for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
     btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
     if (manifold->getNumContacts() > 1 &&
@@ -211,6 +215,18 @@ void DynamicsWorld::solveConstraints(btContactSolverInfo& solverInfo) {
 // Solves the part. With kMayCutAtSlip, a part in which a slip turned round is
 // put back as it was before the solve and shortened to that time, and the
 // turn is returned: the part is to be solved again.
+void DynamicsWorld::solveUntouched(btContactSolverInfo& solverInfo) {
+  solverInfo.m_timeStep = partLength_;
+  meanTurn_.clear();
+  btDiscreteDynamicsWorld::solveConstraints(solverInfo);
+  solved_ = true;
+  stopped_.clear();
+  slipShare_.clear();
+  sliding_.clear();
+  bounced_.clear();
+  lastSlipEnd_.reset();
+}
+
 SlipTurn DynamicsWorld::solvePart(btContactSolverInfo& solverInfo, const ImpactScan& scan, PartSolve how) {
   btDispatcher* dispatcher = getDispatcher();
   // A part shorter than the step (cut at an impact, or what was left after

@@ -93,6 +93,10 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   // round (SlipEvents.h); or again, after such a cut.
   enum class PartSolve { kWhole, kMayCutAtSlip, kAfterSlipCut };
   SlipTurn solvePart(btContactSolverInfo& solverInfo, const ImpactScan& scan, PartSolve how);
+  // A part in which no body touches or nears another (free flight): solved
+  // as Bullet solves it, leaving what solvePart leaves when there are no
+  // contacts, without scanning for them.
+  void solveUntouched(btContactSolverInfo& solverInfo);
   std::vector<btManifoldPoint*> holdFrictionAlongLine();
   void findSlipStops(const std::vector<Slip>& slipping);
   // Slips slower than this share of what kinetic friction removes in a
