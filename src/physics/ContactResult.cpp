@@ -186,12 +186,15 @@ void CarriedImpulses::save(btDispatcher& dispatcher) {
       }
       saved_.push_back({manifold, manifold->getBody0(), manifold->getBody1(), point.m_localPointA, point.m_localPointB,
                         point.m_appliedImpulse, point.m_appliedImpulseLateral1, point.m_appliedImpulseLateral2,
-                        point.getLifeTime()});
+                        point.getLifeTime(), static_cast<int>(saved_.size())});
     }
   }
-  // By manifold, so that restore() finds a manifold's points by a search.
-  std::stable_sort(saved_.begin(), saved_.end(), [](const Saved& a, const Saved& b) {
-    return std::less<const btPersistentManifold*>()(a.manifold, b.manifold);
+  // By manifold, so that restore() finds a manifold's points by a search;
+  // a manifold's in the order saved (as a stable sort, which allocated a
+  // buffer every step).
+  std::sort(saved_.begin(), saved_.end(), [](const Saved& a, const Saved& b) {
+    if (a.manifold != b.manifold) return std::less<const btPersistentManifold*>()(a.manifold, b.manifold);
+    return a.order < b.order;
   });
 }
 

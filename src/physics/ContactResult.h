@@ -92,6 +92,7 @@ class CarriedImpulses {
     btVector3 localA, localB;  // in each body's frame
     btScalar impulse, lateral1, lateral2;
     int lifeTime;
+    int order;  // saved this many before it
   };
   struct Before;
   std::vector<Saved> saved_;  // by manifold

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <unordered_map>
-#include <unordered_set>
 
 #include "physics/ContactResult.h"
 #include "physics/FaceEdges.h"
@@ -134,7 +133,7 @@ void DynamicsWorld::integrateTransforms(btScalar) {
     if (!body->isActive() || body->isStaticOrKinematicObject()) continue;
     const btVector3 change = body->getLinearVelocity() - startVelocities_[static_cast<std::size_t>(i)];
     if (change.length2() > limit * limit) continue;  // an impact: keep Bullet's update
-    if (stopped_.count(body) > 0) continue;  // likewise
+    if (stopped_.contains(body)) continue;  // likewise
     // Velocity changes linearly until a slip stops, then stays: the mean
     // over the part is the end velocity less half the change times the
     // share of the part spent slipping (1 unless the slip stopped in it).
@@ -153,7 +152,7 @@ void DynamicsWorld::integrateTransforms(btScalar) {
     // then had its edge points' impulses alternate from step to step, and
     // grew a sideways spin from rounding to 0.02 rad/s; a cylinder rolling
     // on its rims went 0.5 mm under them at 60 Hz.
-    if (meanTurn_.count(body) > 0) {
+    if (meanTurn_.contains(body)) {
       const btVector3 turn = body->getAngularVelocity() - startSpins_[static_cast<std::size_t>(i)];
       btTransformUtil::integrateTransform(startPoses_[static_cast<std::size_t>(i)], body->getLinearVelocity(),
                                           body->getAngularVelocity() - turn / 2, timeStep, pose);
@@ -185,12 +184,13 @@ void DynamicsWorld::solveConstraints(btContactSolverInfo& solverInfo) {
     }
   }
   resolveTouchingImpacts(solverInfo);
+  pointBoxes_.start(*dispatcher);
   const ImpactScan scan(*dispatcher, bounced_);
   if (mayCut_) {
     const double cut = std::min({scan.earliestImpact(partLength_, kBounceSpeed),
                                  scan.earliestSeparatedImpact(*getBroadphase()->getOverlappingPairCache(),
                                                               partLength_, kBounceSpeed),
-                                 earliestFaceExit(*dispatcher, partLength_)});
+                                 earliestFaceExit(*dispatcher, partLength_, pointBoxes_)});
     if (cut < partLength_) shortenPart(cut);
   }
   // A part in which a slip turns round or stops is cut there and solved
@@ -238,7 +238,8 @@ SlipTurn DynamicsWorld::solvePart(btContactSolverInfo& solverInfo, const ImpactS
   // no impact in it) carries on what it solved: its loads, which the
   // rolling resistance of the next part reads (given none at a push's
   // first step, a ball rolled a part unresisted).
-  std::vector<std::pair<btManifoldPoint*, btVector3>> carried;
+  std::vector<std::pair<btManifoldPoint*, btVector3>>& carried = partCarried_;
+  carried.clear();
   if (partLength_ < stepLength_ && how != PartSolve::kAfterSlipCut) {
     for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
       btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
@@ -256,7 +257,8 @@ SlipTurn DynamicsWorld::solvePart(btContactSolverInfo& solverInfo, const ImpactS
   // The points closing at the part's start that meet inside it even at
   // that speed: a body one of them stops changes its velocity at once, not
   // smoothly. (A part cut at an impact reaches its point only at its end.)
-  std::vector<std::pair<const btPersistentManifold*, const btManifoldPoint*>> closing;
+  std::vector<std::pair<const btPersistentManifold*, const btManifoldPoint*>>& closing = closing_;
+  closing.clear();
   for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
     const btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
     for (int p = 0; p < manifold->getNumContacts(); ++p) {
@@ -272,11 +274,14 @@ SlipTurn DynamicsWorld::solvePart(btContactSolverInfo& solverInfo, const ImpactS
   // points: held at the mean, they let a cone's rim, landing over a box's
   // edge, go 0.75 mm into the box at 60 Hz (0.29 mm without).
   meanTurn_.clear();
-  std::unordered_set<const btCollisionObject*> stopping;
-  for (const auto& [manifold, point] : closing) stopping.insert({manifold->getBody0(), manifold->getBody1()});
-  if (secondOrder_) scan.holdMeanVelocity(partLength_, stopping, heldGaps_, meanTurn_);
-  holdEdgeCurvature(*dispatcher, partLength_, stepLength_, secondOrder_, heldGaps_);
-  holdEdgeLevers(*dispatcher, partLength_, heldPlaces_);
+  stopping_.clear();
+  for (const auto& [manifold, point] : closing) {
+    stopping_.insert(manifold->getBody0());
+    stopping_.insert(manifold->getBody1());
+  }
+  if (secondOrder_) scan.holdMeanVelocity(partLength_, stopping_, heldGaps_, meanTurn_);
+  holdEdgeCurvature(*dispatcher, partLength_, stepLength_, secondOrder_, heldGaps_, pointBoxes_);
+  holdEdgeLevers(*dispatcher, partLength_, heldPlaces_, pointBoxes_);
   // A slip counts if its contact slid through the part before, or if it is
   // more than friction takes in the part (a push's): rolling resistance
   // makes a small slip of its own at a part's start, which friction stops
@@ -303,7 +308,8 @@ SlipTurn DynamicsWorld::solvePart(btContactSolverInfo& solverInfo, const ImpactS
     stopped_.clear();
     for (const auto& [manifold, point] : closing) {
       if (!(point->getAppliedImpulse() > 0)) continue;
-      stopped_.insert({manifold->getBody0(), manifold->getBody1()});
+      stopped_.insert(manifold->getBody0());
+      stopped_.insert(manifold->getBody1());
     }
     findSlipStops(slipping);
   }

@@ -2,12 +2,12 @@
 
 #include <optional>
 #include <unordered_map>
-#include <unordered_set>
 #include <utility>
 #include <vector>
 
 #include <btBulletDynamicsCommon.h>
 
+#include "physics/BodySet.h"
 #include "physics/ContactIslands.h"
 #include "physics/ContactResult.h"
 #include "physics/FaceEdges.h"
@@ -125,8 +125,9 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   bool solved_ = false;      // a solve has run: contacts carry their loads
   std::vector<std::pair<btManifoldPoint*, btScalar>> heldGaps_;
   std::vector<HeldPlace> heldPlaces_;
+  PointBoxes pointBoxes_;  // the boxes the part's points lie on (FaceEdges)
   std::vector<btManifoldPoint*> bounced_;  // points bounced at the start of the part
-  std::unordered_set<const btCollisionObject*> stopped_;  // bodies a closing point stopped in the last solve
+  BodySet stopped_;  // bodies a closing point stopped in the last solve
   // Bodies whose slip friction stopped inside the last solve's part: the
   // share of the part they slipped for (integrateTransforms).
   struct SlipStop {
@@ -138,7 +139,12 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   std::vector<btVector3> startVelocities_;
   std::vector<btVector3> startSpins_;    // rad/s, read with startVelocities_
   std::vector<btTransform> startPoses_;  // each body's at the part's start, when one turns by its mean rate
-  std::unordered_set<const btCollisionObject*> meanTurn_;  // bodies with rows held at the mean
+  BodySet meanTurn_;  // bodies with rows held at the mean
+  // solvePart's, kept to reuse their storage: the impulses a part carries
+  // on, the points closing at its start and their bodies.
+  std::vector<std::pair<btManifoldPoint*, btVector3>> partCarried_;
+  std::vector<std::pair<const btPersistentManifold*, const btManifoldPoint*>> closing_;
+  BodySet stopping_;
   CarriedImpulses carried_;  // per non-static body, at the step's start
   PartStart partStart_;      // the part's start, while a slip may turn in it
   // The contact whose slip turned round or stopped where the last part was

@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <map>
-#include <unordered_set>
 #include <vector>
 
 #include "physics/Impacts.h"

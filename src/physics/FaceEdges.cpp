@@ -30,10 +30,7 @@ constexpr double kLeverTravel = 0.1;
 // on it in a part `length` s long.
 double edgeBand(double speed, double length) { return std::max(kOnEdge, kShortestCut * std::fabs(speed) * length); }
 
-struct BoxPiece {
-  btTransform place;  // the box's frame in the world
-  btVector3 half;     // its outer half extents
-};
+using BoxPiece = PointBoxes::Box;
 
 // The box of `object` (itself, or a compound's child) that `point` lies on.
 std::optional<BoxPiece> boxAt(const btCollisionObject& object, const btVector3& point) {
@@ -92,8 +89,10 @@ class Up {
   const btRigidBody* body_ = nullptr;
   btVector3 up_{0, 0, 0};
 };
-std::optional<Carried> carriedOnFace(const btPersistentManifold& manifold, const btManifoldPoint& point,
-                                     bool carriedIsA, Up& up) {
+// Point `p` of manifold `m`.
+std::optional<Carried> carriedOnFace(const btPersistentManifold& manifold, int m, int p, bool carriedIsA, Up& up,
+                                     PointBoxes& boxes) {
+  const btManifoldPoint& point = manifold.getContactPoint(p);
   if (point.getDistance() > kOnBox) return std::nullopt;
   const btRigidBody* body = movingBody(carriedIsA ? manifold.getBody0() : manifold.getBody1());
   const btCollisionObject* support = carriedIsA ? manifold.getBody1() : manifold.getBody0();
@@ -101,7 +100,7 @@ std::optional<Carried> carriedOnFace(const btPersistentManifold& manifold, const
   // The normal points from B to A; carried from below, within 45 degrees.
   const btVector3 normal = carriedIsA ? point.m_normalWorldOnB : -point.m_normalWorldOnB;
   if (normal.dot(up.of(*body)) < 0.7) return std::nullopt;
-  const auto box = boxAt(*support, carriedIsA ? point.getPositionWorldOnB() : point.getPositionWorldOnA());
+  const std::optional<BoxPiece>& box = boxes.at(manifold, m, p, carriedIsA ? 1 : 0);
   if (!box) return std::nullopt;
   const btVector3 local = box->place.getBasis().transpose() * normal;
   const int face = local.closestAxis();
@@ -117,7 +116,31 @@ bool sameFace(const Carried& a, const Carried& b) {
 
 }  // namespace
 
-double earliestFaceExit(btDispatcher& dispatcher, double horizon) {
+void PointBoxes::start(btDispatcher& dispatcher) {
+  first_.resize(static_cast<std::size_t>(dispatcher.getNumManifolds()) + 1);
+  std::size_t total = 0;
+  for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
+    first_[static_cast<std::size_t>(m)] = total;
+    total += static_cast<std::size_t>(dispatcher.getManifoldByIndexInternal(m)->getNumContacts());
+  }
+  first_.back() = total;
+  entries_.resize(total);
+  for (Entry& e : entries_) e.known[0] = e.known[1] = false;
+}
+
+const std::optional<PointBoxes::Box>& PointBoxes::at(const btPersistentManifold& manifold, int m, int p, int side) {
+  Entry& e = entries_[first_[static_cast<std::size_t>(m)] + static_cast<std::size_t>(p)];
+  const btManifoldPoint& point = manifold.getContactPoint(p);
+  const btVector3& place = side == 0 ? point.getPositionWorldOnA() : point.getPositionWorldOnB();
+  if (!e.known[side] || !(e.place[side] == place)) {
+    e.box[side] = boxAt(side == 0 ? *manifold.getBody0() : *manifold.getBody1(), place);
+    e.place[side] = place;
+    e.known[side] = true;
+  }
+  return e.box[side];
+}
+
+double earliestFaceExit(btDispatcher& dispatcher, double horizon, PointBoxes& boxes) {
   double earliest = horizon;
   // The time depends on the body, the box and the face alone, which the
   // points of a contact share: each is timed once.
@@ -126,9 +149,8 @@ double earliestFaceExit(btDispatcher& dispatcher, double horizon) {
   for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
     const btPersistentManifold& manifold = *dispatcher.getManifoldByIndexInternal(m);
     for (int p = 0; p < manifold.getNumContacts(); ++p) {
-      const btManifoldPoint& point = manifold.getContactPoint(p);
       for (const bool carriedIsA : {true, false}) {  // either body may be the one carried
-        const auto carried = carriedOnFace(manifold, point, carriedIsA, up);
+        const auto carried = carriedOnFace(manifold, m, p, carriedIsA, up, boxes);
         if (!carried || (timed && sameFace(*carried, *timed))) continue;
         timed = carried;
         const BoxPiece& box = carried->box;
@@ -148,13 +170,13 @@ double earliestFaceExit(btDispatcher& dispatcher, double horizon) {
 
 namespace {
 
-// How a ball moves about what it touches at `point` in a part `length` s
+// How a ball moves about what it touches at point `p` of manifold `m` in a part `length` s
 // long, where its distance from it bends: the centre's place relative to
 // the feature it moves about (an edge or corner of a box, or the other
 // ball's centre) and its velocity relative to it, less any part along an
 // edge; none over a box's face.
-std::optional<std::pair<btVector3, btVector3>> curvedPath(const btPersistentManifold& manifold,
-                                                       const btManifoldPoint& point, double length) {
+std::optional<std::pair<btVector3, btVector3>> curvedPath(const btPersistentManifold& manifold, int m, int p,
+                                                       double length, PointBoxes& boxes) {
   const btRigidBody* a = movingBody(manifold.getBody0());
   const btRigidBody* b = movingBody(manifold.getBody1());
   if (isBall(*manifold.getBody0()) && isBall(*manifold.getBody1())) {
@@ -168,7 +190,7 @@ std::optional<std::pair<btVector3, btVector3>> curvedPath(const btPersistentMani
     const btRigidBody* ball = ballIsA ? a : b;
     if (!ball || !isBall(*ball)) continue;
     const btCollisionObject& support = *(ballIsA ? manifold.getBody1() : manifold.getBody0());
-    const auto box = boxAt(support, ballIsA ? point.getPositionWorldOnB() : point.getPositionWorldOnA());
+    const std::optional<BoxPiece>& box = boxes.at(manifold, m, p, ballIsA ? 1 : 0);
     if (!box) continue;
     // The box's nearest point to the centre, sharp (its outer extents);
     // an axis the centre is past (or on the edge of) is pinned there.
@@ -195,14 +217,14 @@ std::optional<std::pair<btVector3, btVector3>> curvedPath(const btPersistentMani
 }  // namespace
 
 void holdEdgeCurvature(btDispatcher& dispatcher, double length, double stepLength, bool meanVelocity,
-                       std::vector<std::pair<btManifoldPoint*, btScalar>>& saved) {
+                       std::vector<std::pair<btManifoldPoint*, btScalar>>& saved, PointBoxes& boxes) {
   for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
     btPersistentManifold& manifold = *dispatcher.getManifoldByIndexInternal(m);
     for (int p = 0; p < manifold.getNumContacts(); ++p) {
       btManifoldPoint& point = manifold.getContactPoint(p);
       // A point striking now is an impact, which stops the closing at once.
       if (strikesNow(manifold, point, stepLength)) continue;
-      const auto path = curvedPath(manifold, point, length);
+      const auto path = curvedPath(manifold, m, p, length, boxes);
       if (!path) continue;
       // How much farther apart the straight-line motion leaves them than
       // the row's first-order change: |r + v t| - |r| - (r / |r|).v t,
@@ -222,7 +244,7 @@ void holdEdgeCurvature(btDispatcher& dispatcher, double length, double stepLengt
   }
 }
 
-void holdEdgeLevers(btDispatcher& dispatcher, double length, std::vector<HeldPlace>& saved) {
+void holdEdgeLevers(btDispatcher& dispatcher, double length, std::vector<HeldPlace>& saved, PointBoxes& boxes) {
   constexpr double kOnSide = 1e-7;  // m: a clipped point lies on the edge to rounding
   Up up;
   for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
@@ -230,7 +252,7 @@ void holdEdgeLevers(btDispatcher& dispatcher, double length, std::vector<HeldPla
     for (int p = 0; p < manifold.getNumContacts(); ++p) {
       btManifoldPoint& point = manifold.getContactPoint(p);
       for (const bool carriedIsA : {true, false}) {
-        const auto carried = carriedOnFace(manifold, point, carriedIsA, up);
+        const auto carried = carriedOnFace(manifold, m, p, carriedIsA, up, boxes);
         if (!carried) continue;
         const BoxPiece& box = carried->box;
         const int face = carried->face;
@@ -241,7 +263,7 @@ void holdEdgeLevers(btDispatcher& dispatcher, double length, std::vector<HeldPla
         for (int i = 0; i < 3; ++i) onEdge = onEdge || (i != face && std::fabs(there[i]) >= box.half[i] - kOnSide);
         if (!onEdge) continue;
         const btVector3& onBody = carriedIsA ? point.getPositionWorldOnA() : point.getPositionWorldOnB();
-        const auto own = boxAt(*carried->body, onBody);
+        const std::optional<BoxPiece>& own = boxes.at(manifold, m, p, carriedIsA ? 0 : 1);
         if (!own) continue;
         // A corner of the body's own box moves with it: only a point inside
         // its face, cut out by the support's edge, stays on that edge.

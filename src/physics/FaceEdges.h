@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -19,11 +20,40 @@ namespace tabletop {
 /// cut where the centre reaches the edge (DynamicsWorld), and a ball's row
 /// at an edge counts the curvature of its path about it.
 
+/// The box of a body that each contact point lies on, on either side (the
+/// body itself, or a compound's box child such as the table top; none if
+/// it is not a box there), found once a part: earliestFaceExit,
+/// holdEdgeCurvature and holdEdgeLevers ask for the same ones, and
+/// between them no body moves and no point is found again (a point moved
+/// since it was looked up is looked up afresh). start() before a part's
+/// first scan, after anything that moves a body.
+class PointBoxes {
+ public:
+  struct Box {
+    btTransform place;  // the box's frame in the world
+    btVector3 half;     // its outer half extents
+  };
+  void start(btDispatcher& dispatcher);
+  /// The box of point `p` of manifold `m` (its index in the dispatcher),
+  /// on the body of `side` (0: the manifold's body 0, at the point's place
+  /// on it; 1: body 1).
+  const std::optional<Box>& at(const btPersistentManifold& manifold, int m, int p, int side);
+
+ private:
+  struct Entry {
+    bool known[2] = {false, false};
+    btVector3 place[2];
+    std::optional<Box> box[2];
+  };
+  std::vector<std::size_t> first_;  // each manifold's first entry
+  std::vector<Entry> entries_;
+};
+
 /// The earliest time within `horizon`, s, at which the centre of a body
 /// touching the upward face of a box reaches that face's edge, moving at
 /// its velocity relative to the box; `horizon` if none, or if the centre
 /// is already within a thousandth of the part's travel of it.
-double earliestFaceExit(btDispatcher& dispatcher, double horizon);
+double earliestFaceExit(btDispatcher& dispatcher, double horizon, PointBoxes& boxes);
 
 /// Readies the rows of balls at a box's edge or corner (the centre past
 /// the face), and of two balls, for a part `length` s long of a step
@@ -40,7 +70,7 @@ double earliestFaceExit(btDispatcher& dispatcher, double horizon);
 /// impact stops; `saved` gets the points and their gaps, to be put back
 /// after the solve.
 void holdEdgeCurvature(btDispatcher& dispatcher, double length, double stepLength, bool meanVelocity,
-                       std::vector<std::pair<btManifoldPoint*, btScalar>>& saved);
+                       std::vector<std::pair<btManifoldPoint*, btScalar>>& saved, PointBoxes& boxes);
 
 /// Readies for a part `length` s long the points where a box's face is cut
 /// by the edge of the box face under it (a cube overhanging the table top
@@ -56,6 +86,6 @@ struct HeldPlace {
   btManifoldPoint* point;
   btVector3 onA, onB;  // its world places before
 };
-void holdEdgeLevers(btDispatcher& dispatcher, double length, std::vector<HeldPlace>& saved);
+void holdEdgeLevers(btDispatcher& dispatcher, double length, std::vector<HeldPlace>& saved, PointBoxes& boxes);
 
 }  // namespace tabletop

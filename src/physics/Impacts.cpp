@@ -120,7 +120,7 @@ ImpactScan::ImpactScan(btDispatcher& dispatcher, const std::vector<btManifoldPoi
 }
 
 bool ImpactScan::held(const btCollisionObject* object) const {
-  return held_.count(object) > 0;
+  return held_.contains(object);
 }
 
 double ImpactScan::accelerationTowards(const btCollisionObject& a, const btCollisionObject& b,
@@ -239,11 +239,10 @@ double ImpactScan::earliestSeparatedImpact(btOverlappingPairCache& pairs, double
   return earliest;
 }
 
-void ImpactScan::holdMeanVelocity(double length, const std::unordered_set<const btCollisionObject*>& stopping,
-                                  std::vector<std::pair<btManifoldPoint*, btScalar>>& saved,
-                                  std::unordered_set<const btCollisionObject*>& bodies) const {
+void ImpactScan::holdMeanVelocity(double length, const BodySet& stopping,
+                                  std::vector<std::pair<btManifoldPoint*, btScalar>>& saved, BodySet& bodies) const {
   const auto free = [&](const btCollisionObject* o) {
-    return !o->isStaticOrKinematicObject() && !held(o) && stopping.count(o) == 0;
+    return !o->isStaticOrKinematicObject() && !held(o) && !stopping.contains(o);
   };
   for (int m = 0; m < dispatcher_.getNumManifolds(); ++m) {
     btPersistentManifold& manifold = *dispatcher_.getManifoldByIndexInternal(m);
@@ -256,7 +255,8 @@ void ImpactScan::holdMeanVelocity(double length, const std::unordered_set<const 
       if (!(mean > gap)) continue;
       saved.emplace_back(&point, point.getDistance());
       point.setDistance(mean);
-      bodies.insert({manifold.getBody0(), manifold.getBody1()});
+      bodies.insert(manifold.getBody0());
+      bodies.insert(manifold.getBody1());
     }
   }
 }

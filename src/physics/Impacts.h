@@ -1,11 +1,12 @@
 #pragma once
 
-#include <unordered_set>
 #include <utility>
 #include <vector>
 
 #include <btBulletDynamicsCommon.h>
 #include <BulletCollision/NarrowPhaseCollision/btPointCollector.h>
+
+#include "physics/BodySet.h"
 
 namespace tabletop {
 
@@ -112,9 +113,8 @@ class ImpactScan {
   /// `saved` gets the points and their gaps, to be put back after the
   /// solve, and `bodies` the bodies at them, whose turn is then to follow
   /// the mean rate as well (DynamicsWorld).
-  void holdMeanVelocity(double length, const std::unordered_set<const btCollisionObject*>& stopping,
-                        std::vector<std::pair<btManifoldPoint*, btScalar>>& saved,
-                        std::unordered_set<const btCollisionObject*>& bodies) const;
+  void holdMeanVelocity(double length, const BodySet& stopping,
+                        std::vector<std::pair<btManifoldPoint*, btScalar>>& saved, BodySet& bodies) const;
 
  private:
   bool held(const btCollisionObject* object) const;
@@ -125,7 +125,7 @@ class ImpactScan {
 
   btDispatcher& dispatcher_;
   const std::vector<btManifoldPoint*>& bounced_;
-  std::unordered_set<const btCollisionObject*> held_;  // bodies a touching point (not a bounced one) holds
+  BodySet held_;  // bodies a touching point (not a bounced one) holds
 };
 
 }  // namespace tabletop
