@@ -191,6 +191,12 @@ void IslandSolver::createMLCPFast(const btContactSolverInfo& info) {
     m_hi[i] = c.m_upperLimit;
     m_x[i] = warm ? c.m_appliedImpulse : 0;
     m_xSplit[i] = warm ? c.m_appliedPushImpulse : 0;
+    // A row held at zero (a sliding point's friction across its slip,
+    // dropSlidingCrossFriction) has no impulse to give: its entries of A
+    // are left at zero. Neither solver reads them: the guess takes in only
+    // rows with room between their bounds, and Dantzig's pivoting keeps
+    // such a row at its bound and never lets it limit a step.
+    if (c.m_lowerLimit == 0 && c.m_upperLimit == 0) continue;
     addSide(i, c.m_solverBodyIdA, c.m_contactNormal1, c.m_relpos1CrossNormal);
     addSide(i, c.m_solverBodyIdB, c.m_contactNormal2, c.m_relpos2CrossNormal);
   }
