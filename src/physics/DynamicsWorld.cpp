@@ -185,7 +185,7 @@ void DynamicsWorld::solveConstraints(btContactSolverInfo& solverInfo) {
   }
   resolveTouchingImpacts(solverInfo);
   pointBoxes_.start(*dispatcher);
-  const ImpactScan scan(*dispatcher, bounced_);
+  const ImpactScan scan(*dispatcher, bounced_, impactStorage_);
   if (mayCut_) {
     const double cut = std::min({scan.earliestImpact(partLength_, kBounceSpeed),
                                  scan.earliestSeparatedImpact(*getBroadphase()->getOverlappingPairCache(),

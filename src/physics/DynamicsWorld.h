@@ -11,11 +11,11 @@
 #include "physics/ContactIslands.h"
 #include "physics/ContactResult.h"
 #include "physics/FaceEdges.h"
+#include "physics/Impacts.h"
 #include "physics/SlipEvents.h"
 
 namespace tabletop {
 
-class ImpactScan;
 
 /// Bullet's discrete dynamics world with its contacts and integration
 /// corrected where a closed form showed them wrong (docs/bullet-corrections.md
@@ -126,6 +126,7 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   std::vector<std::pair<btManifoldPoint*, btScalar>> heldGaps_;
   std::vector<HeldPlace> heldPlaces_;
   PointBoxes pointBoxes_;  // the boxes the part's points lie on (FaceEdges)
+  ImpactScan::Storage impactStorage_;  // the part's ImpactScan's
   std::vector<btManifoldPoint*> bounced_;  // points bounced at the start of the part
   BodySet stopped_;  // bodies a closing point stopped in the last solve
   // Bodies whose slip friction stopped inside the last solve's part: the

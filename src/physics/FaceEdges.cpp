@@ -74,7 +74,7 @@ btVector3 relativeVelocity(const btRigidBody& body, const btCollisionObject& sup
 struct Carried {
   const btRigidBody* body;
   const btCollisionObject* support;
-  BoxPiece box;
+  const BoxPiece* box;  // PointBoxes' own, valid through the scan
   int face;
 };
 // A body's up, against its gravity, kept while the points are of one body.
@@ -105,13 +105,13 @@ std::optional<Carried> carriedOnFace(const btPersistentManifold& manifold, int m
   const btVector3 local = box->place.getBasis().transpose() * normal;
   const int face = local.closestAxis();
   if (std::fabs(local[face]) < 0.999) return std::nullopt;  // an edge or a corner, not a face
-  return Carried{body, support, *box, face};
+  return Carried{body, support, &*box, face};
 }
 
 // Whether two carried points are of one body on one face of one box.
 bool sameFace(const Carried& a, const Carried& b) {
-  return a.body == b.body && a.support == b.support && a.face == b.face && a.box.place == b.box.place &&
-         a.box.half == b.box.half;
+  return a.body == b.body && a.support == b.support && a.face == b.face && a.box->place == b.box->place &&
+         a.box->half == b.box->half;
 }
 
 }  // namespace
@@ -153,7 +153,7 @@ double earliestFaceExit(btDispatcher& dispatcher, double horizon, PointBoxes& bo
         const auto carried = carriedOnFace(manifold, m, p, carriedIsA, up, boxes);
         if (!carried || (timed && sameFace(*carried, *timed))) continue;
         timed = carried;
-        const BoxPiece& box = carried->box;
+        const BoxPiece& box = *carried->box;
         const btVector3 centre = box.place.invXform(carried->body->getCenterOfMassPosition());
         const btVector3 v = relativeVelocity(*carried->body, *carried->support, box);
         for (int i = 0; i < 3; ++i) {
@@ -254,7 +254,7 @@ void holdEdgeLevers(btDispatcher& dispatcher, double length, std::vector<HeldPla
       for (const bool carriedIsA : {true, false}) {
         const auto carried = carriedOnFace(manifold, m, p, carriedIsA, up, boxes);
         if (!carried) continue;
-        const BoxPiece& box = carried->box;
+        const BoxPiece& box = *carried->box;
         const int face = carried->face;
         // Only a point on an edge of the support's face (most are inside
         // it: looked at first, as it costs the least).

@@ -106,21 +106,22 @@ double restitutionOf(const btPersistentManifold& manifold) {
   return a && b ? combine(*a, *b).restitution : 0.0;
 }
 
-ImpactScan::ImpactScan(btDispatcher& dispatcher, const std::vector<btManifoldPoint*>& bounced)
-    : dispatcher_(dispatcher), bounced_(bounced) {
+ImpactScan::ImpactScan(btDispatcher& dispatcher, const std::vector<btManifoldPoint*>& bounced, Storage& storage)
+    : dispatcher_(dispatcher), bounced_(bounced), storage_(storage) {
+  storage_.held.clear();
   for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
     const btPersistentManifold& manifold = *dispatcher.getManifoldByIndexInternal(m);
     for (int p = 0; p < manifold.getNumContacts(); ++p) {
       const btManifoldPoint& point = manifold.getContactPoint(p);
       if (point.getDistance() > kTouching || std::find(bounced.begin(), bounced.end(), &point) != bounced.end()) continue;
-      held_.insert(manifold.getBody0());
-      held_.insert(manifold.getBody1());
+      storage_.held.insert(manifold.getBody0());
+      storage_.held.insert(manifold.getBody1());
     }
   }
 }
 
 bool ImpactScan::held(const btCollisionObject* object) const {
-  return held_.contains(object);
+  return storage_.held.contains(object);
 }
 
 double ImpactScan::accelerationTowards(const btCollisionObject& a, const btCollisionObject& b,
@@ -201,7 +202,7 @@ double boxGap(const btConvexShape& a, const btTransform& placeA, const btConvexS
 
 double ImpactScan::earliestSeparatedImpact(btOverlappingPairCache& pairs, double horizon, double impactSpeed) const {
   double earliest = horizon;
-  btManifoldArray manifolds;
+  btManifoldArray& manifolds = storage_.manifolds;
   btBroadphasePairArray& array = pairs.getOverlappingPairArray();
   for (int i = 0; i < array.size(); ++i) {
     const btBroadphasePair& pair = array[i];

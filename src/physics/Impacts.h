@@ -76,7 +76,13 @@ double restitutionOf(const btPersistentManifold& manifold);
 /// to agree with the trapezoid rule.
 class ImpactScan {
  public:
-  ImpactScan(btDispatcher& dispatcher, const std::vector<btManifoldPoint*>& bounced);
+  /// Storage a scan fills, kept by its caller from part to part so that
+  /// a scan allocates nothing once it has grown.
+  struct Storage {
+    BodySet held;                 // bodies a touching point (not a bounced one) holds
+    btManifoldArray manifolds;    // a pair's manifolds (earliestSeparatedImpact)
+  };
+  ImpactScan(btDispatcher& dispatcher, const std::vector<btManifoldPoint*>& bounced, Storage& storage);
 
   /// The rate, m/s^2, at which the bodies at `point` approach from their
   /// forces (gravity), a body something touches taken as not accelerating.
@@ -125,7 +131,7 @@ class ImpactScan {
 
   btDispatcher& dispatcher_;
   const std::vector<btManifoldPoint*>& bounced_;
-  BodySet held_;  // bodies a touching point (not a bounced one) holds
+  Storage& storage_;
 };
 
 }  // namespace tabletop

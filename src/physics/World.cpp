@@ -233,13 +233,13 @@ double World::deepestPenetration() const {
 std::vector<Vec3> World::contactPoints() const {
   // A point counts while it is within Bullet's contact breaking threshold
   // of touching; the point drawn is midway between the two surfaces.
-  constexpr double kTouching = 1e-3;  // metres
+  constexpr double kShownWithin = 1e-3;  // metres
   std::vector<Vec3> points;
   for (int m = 0; m < dispatcher_->getNumManifolds(); ++m) {
     const btPersistentManifold* manifold = dispatcher_->getManifoldByIndexInternal(m);
     for (int p = 0; p < manifold->getNumContacts(); ++p) {
       const btManifoldPoint& point = manifold->getContactPoint(p);
-      if (point.getDistance() > kTouching) continue;
+      if (point.getDistance() > kShownWithin) continue;
       const btVector3 mid = 0.5 * (point.getPositionWorldOnA() + point.getPositionWorldOnB());
       points.push_back({mid.x(), mid.y(), mid.z()});
     }
