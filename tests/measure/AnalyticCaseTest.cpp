@@ -187,7 +187,7 @@ TEST(AnalyticCase, CubeTipsAtTheEdgeFromAnyStart) {
 // on these scenes: with Bullet's 10 sweeps of sequential impulses the
 // distances are off by 0.06 mm (slips on) and 2.8 mm (rides along) at
 // 60 Hz, where the exact solve costs them about twice the sweeps'
-// instructions per step (docs/bench.md, "What the riders' cost buys").
+// instructions per step (docs/bench.md, "What the events inside a step cost").
 TEST(AnalyticCase, StackedCubeRidesAlongOrSlipsOnWithTheExactSolve) {
   for (const char* name : {"stack_rides_along", "stack_rider_slips"}) {
     for (const double rate : {240.0, 60.0}) {
