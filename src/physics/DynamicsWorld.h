@@ -137,6 +137,15 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   };
   std::unordered_map<const btCollisionObject*, SlipStop> slipShare_;
   SlidingContacts sliding_;  // contacts whose friction was at its limit in it
+  // A contact's friction in the last solve, its limit, and its points'
+  // normals by their loads, turned one way (findSlipStops; kept to reuse
+  // its storage).
+  struct SlipUse {
+    const btPersistentManifold* manifold;
+    double friction = 0, limit = 0;
+    btVector3 normal{0, 0, 0};
+  };
+  std::vector<std::pair<ContactKey, SlipUse>> slipUse_;
   std::vector<btVector3> startVelocities_;
   std::vector<btVector3> startSpins_;    // rad/s, read with startVelocities_
   std::vector<btTransform> startPoses_;  // each body's at the part's start, when one turns by its mean rate

@@ -1,7 +1,7 @@
 #include "physics/DynamicsWorld.h"
 
+#include <algorithm>
 #include <cmath>
-#include <map>
 #include <vector>
 
 #include "physics/Impacts.h"
@@ -53,19 +53,24 @@ void DynamicsWorld::findSlipStops(const std::vector<Slip>& slipping) {
   slipShare_.clear();
   // Per contact: a body may slip on two at once (a cube under a rider on
   // the table), and one may stop while the other slips on.
-  struct Used {
-    const btPersistentManifold* manifold;
-    double friction = 0, limit = 0;
-    btVector3 normal{0, 0, 0};  // the points' normals, by their loads, turned one way
-  };
-  std::map<ContactKey, Used> used;
+  // By contact (slipping lists a contact's points together, so each is
+  // found at the back or added), then put in the order of their keys.
+  std::vector<std::pair<ContactKey, SlipUse>>& used = slipUse_;
+  used.clear();
   for (const auto& [manifold, point, velocity] : slipping) {
-    Used& u = used.try_emplace(contactOf(*manifold), Used{manifold}).first->second;
+    const ContactKey key = contactOf(*manifold);
+    auto at = std::find_if(used.rbegin(), used.rend(), [&](const auto& u) { return u.first == key; });
+    if (at == used.rend()) {
+      used.emplace_back(key, SlipUse{manifold});
+      at = used.rbegin();
+    }
+    SlipUse& u = at->second;
     u.friction += std::hypot(point->m_appliedImpulseLateral1, point->m_appliedImpulseLateral2);
     u.limit += point->m_combinedFriction * point->m_appliedImpulse;
     const btVector3 n = point->m_normalWorldOnB * point->m_appliedImpulse;
     u.normal += n.dot(u.normal) < 0 ? -n : n;
   }
+  std::sort(used.begin(), used.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   // A contact slides while its friction is at its limit. Only one that slid
   // through the part before stops in this one (a slip that starts in a
   // part, a rolling body's made by its rolling resistance, is not one that

@@ -1,7 +1,6 @@
 #pragma once
 
 #include <memory>
-#include <set>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -149,8 +148,14 @@ class World : public Simulation {
   std::vector<std::unique_ptr<Shape>> entities_;
   std::unordered_map<std::string, std::size_t> indexOf_;  // entity name -> index (the first of a name)
   std::vector<Tracker> trackers_;
-  std::set<std::pair<int, int>> touching_;
-  std::vector<Contact> contacts_;  // scratch, kept to avoid reallocating
+  // The entity pairs touching after the last step, sorted; and scratch
+  // kept to avoid reallocating: the contacts, the pairs touching now, each
+  // entity's support and the impulse it gives.
+  std::vector<std::pair<int, int>> touching_;
+  std::vector<Contact> contacts_;
+  std::vector<std::pair<int, int>> touchingNow_;
+  std::vector<int> supports_;
+  std::vector<double> strongest_;
   std::vector<Event> events_;
   double entityFriction_ = 0.0;  // the largest friction coefficient of any entity
   double time_ = 0.0;

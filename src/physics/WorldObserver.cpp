@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <set>
 
 #include "physics/World.h"
 
@@ -100,13 +99,15 @@ void World::observe(bool emit) {
   }
   contacts_.resize(merged);
 
-  std::set<std::pair<int, int>> touching;
+  // contacts_ is sorted by entity and other, so the pairs come in order.
+  std::vector<std::pair<int, int>>& touching = touchingNow_;
+  touching.clear();
   for (const Contact& c : contacts_) {
     if (c.other < 0 || c.entity > c.other) continue;  // each entity pair once
     const auto pair = std::make_pair(c.entity, c.other);
-    const bool was = touching_.count(pair) > 0;
+    const bool was = std::binary_search(touching_.begin(), touching_.end(), pair);
     if (c.distance <= kTouchDistance || (was && c.distance <= kApartDistance)) {
-      touching.insert(pair);
+      touching.push_back(pair);
       if (emit && !was) {
         Event e;
         e.t = time_;
@@ -117,12 +118,14 @@ void World::observe(bool emit) {
       }
     }
   }
-  touching_ = std::move(touching);
+  touching_.swap(touching);
 
   // Support: the body pushing each entity up hardest (ties: the lower
   // index, the table and ground first).
-  std::vector<int> support(n, kNoSupport);
-  std::vector<double> strongest(n, -1.0);
+  std::vector<int>& support = supports_;
+  std::vector<double>& strongest = strongest_;
+  support.assign(n, kNoSupport);
+  strongest.assign(n, -1.0);
   for (const Contact& c : contacts_) {
     if (c.support > strongest[c.entity]) {
       strongest[c.entity] = c.support;
