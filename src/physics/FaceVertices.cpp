@@ -90,7 +90,8 @@ void FaceVertices::clipApart(const btCollisionObjectWrapper* body0, const btColl
 }
 
 FaceVertices::Face FaceVertices::outerFace(const btCollisionObjectWrapper* boxWrap,
-                                           const btCollisionObjectWrapper* solidWrap, btScalar timeStep) const {
+                                           const btCollisionObjectWrapper* solidWrap, btScalar timeStep) {
+  near_.clear();
   const auto* box = static_cast<const btBoxShape*>(boxWrap->getCollisionShape());
   const auto* solid = static_cast<const btConvexShape*>(solidWrap->getCollisionShape());
   const btTransform& boxPose = boxWrap->getWorldTransform();
@@ -112,8 +113,8 @@ FaceVertices::Face FaceVertices::outerFace(const btCollisionObjectWrapper* boxWr
   face.normal = boxPose.getBasis().getColumn(face.axis) * side;
   const btScalar offset = face.normal.dot(boxPose.getOrigin()) + half[face.axis];
   if (face.normal.dot(solidPose.getOrigin()) <= offset) return face;  // its centre is not out over the face
-  face.near = nearCorners(*solid, solidPose, face.normal, offset, manifold_->getContactBreakingThreshold(),
-                          {solidWrap->getCollisionObject(), boxWrap->getCollisionObject(), timeStep});
+  nearCorners(*solid, solidPose, face.normal, offset, manifold_->getContactBreakingThreshold(),
+              {solidWrap->getCollisionObject(), boxWrap->getCollisionObject(), timeStep}, corners_, near_);
   face.out = true;
   return face;
 }
@@ -129,20 +130,20 @@ bool FaceVertices::overFace(const btCollisionObjectWrapper* boxWrap, const Face&
 
 bool FaceVertices::touchFace(const btCollisionObjectWrapper* boxWrap, const btCollisionObjectWrapper* solidWrap,
                              bool boxFirst, btScalar timeStep, btManifoldResult* result) {
-  Face face = outerFace(boxWrap, solidWrap, timeStep);
+  const Face face = outerFace(boxWrap, solidWrap, timeStep);
   if (!face.out) return false;
-  for (const NearCorner& c : face.near) {
+  for (const NearCorner& c : near_) {
     if (!overFace(boxWrap, face, c)) return false;
   }
   result->setPersistentManifold(manifold_);
   const int solidBody = boxFirst ? 1 : 0;
   if (solidBody != solid_) choice_.forget();  // the kept corners were the other body's
   solid_ = solidBody;
-  if (face.near.empty()) {
+  if (near_.empty()) {
     choice_.forget();
   } else {
     const auto* solid = static_cast<const btConvexShape*>(solidWrap->getCollisionShape());
-    addCornerPoints(*result, choice_.choose(*solid, std::move(face.near)), face.normal, boxFirst);
+    addCornerPoints(*result, choice_.choose(*solid, near_), face.normal, boxFirst);
   }
   result->refreshContactPoints();
   // Every point is found again each step it touches: one kept from an
@@ -154,10 +155,11 @@ bool FaceVertices::touchFace(const btCollisionObjectWrapper* boxWrap, const btCo
 bool FaceVertices::addCornersOverFace(const btCollisionObjectWrapper* boxWrap,
                                       const btCollisionObjectWrapper* solidWrap, bool boxFirst, btScalar timeStep,
                                       btManifoldResult* result) {
-  Face face = outerFace(boxWrap, solidWrap, timeStep);
-  std::vector<NearCorner> over;
+  const Face face = outerFace(boxWrap, solidWrap, timeStep);
+  std::vector<NearCorner>& over = over_;
+  over.clear();
   if (face.out) {
-    for (const NearCorner& c : face.near) {
+    for (const NearCorner& c : near_) {
       if (overFace(boxWrap, face, c)) over.push_back(c);
     }
   }
@@ -165,7 +167,7 @@ bool FaceVertices::addCornersOverFace(const btCollisionObjectWrapper* boxWrap,
   btPersistentManifold* otherwise = result->getPersistentManifold();
   result->setPersistentManifold(manifold_);
   const auto* solid = static_cast<const btConvexShape*>(solidWrap->getCollisionShape());
-  addCornerPoints(*result, choice_.choose(*solid, std::move(over)), face.normal, boxFirst);
+  addCornerPoints(*result, choice_.choose(*solid, over), face.normal, boxFirst);
   result->refreshContactPoints();
   dropDriftedPoints(*manifold_);
   result->setPersistentManifold(otherwise);

@@ -53,16 +53,16 @@ class FaceVertices : public btActivatingCollisionAlgorithm {
   // `timeStep` (s) is the coming step's, over which corners close.
   bool touchFace(const btCollisionObjectWrapper* boxWrap, const btCollisionObjectWrapper* solidWrap, bool boxFirst,
                  btScalar timeStep, btManifoldResult* result);
-  // The box's face the solid lies farthest out from, and, if the solid's
-  // centre is out over its plane, the solid's corners near it.
+  // The box's face the solid lies farthest out from, and whether the
+  // solid's centre is out over its plane; if it is, the solid's corners
+  // near it go into near_.
   struct Face {
     btVector3 normal;
     int axis = 0;
     bool out = false;
-    std::vector<NearCorner> near;
   };
   Face outerFace(const btCollisionObjectWrapper* boxWrap, const btCollisionObjectWrapper* solidWrap,
-                 btScalar timeStep) const;
+                 btScalar timeStep);
   static bool overFace(const btCollisionObjectWrapper* boxWrap, const Face& face, const NearCorner& corner);
   // A cylinder or a cone that reaches over the face's edge: Bullet's
   // algorithm for the pair finds one point a step (GJK), where the two are
@@ -89,6 +89,10 @@ class FaceVertices : public btActivatingCollisionAlgorithm {
   btPersistentManifold* manifold_ = nullptr;
   CornerChoice choice_;
   int solid_ = -1;  // which body's corners are the points (0 or 1), -1: none
+  // Kept from step to step for their storage: the solid's corners, those
+  // near the face, and those of them over it.
+  std::vector<btVector3> corners_;
+  std::vector<NearCorner> near_, over_;
 
   // How far past a face's edge a corner still counts as over it, m: two
   // equal boxes stacked square have their corners on each other's edges.

@@ -29,13 +29,12 @@ void PlaneVertices::processCollision(const btCollisionObjectWrapper* body0, cons
   const btScalar offset = plane->getPlaneConstant() + normal.dot(planePose.getOrigin());
 
   result->setPersistentManifold(manifold_);
-  std::vector<NearCorner> near =
-      nearCorners(*solid, solidPose, normal, offset, manifold_->getContactBreakingThreshold(),
-                  {solidWrap->getCollisionObject(), planeWrap->getCollisionObject(), info.m_timeStep});
-  if (near.empty()) {
+  nearCorners(*solid, solidPose, normal, offset, manifold_->getContactBreakingThreshold(),
+              {solidWrap->getCollisionObject(), planeWrap->getCollisionObject(), info.m_timeStep}, corners_, near_);
+  if (near_.empty()) {
     choice_.forget();
   } else {
-    addCornerPoints(*result, choice_.choose(*solid, std::move(near)), normal, planeFirst);
+    addCornerPoints(*result, choice_.choose(*solid, near_), normal, planeFirst);
   }
   result->refreshContactPoints();
 }

@@ -42,6 +42,10 @@ class PlaneVertices : public btActivatingCollisionAlgorithm {
  private:
   btPersistentManifold* manifold_ = nullptr;
   CornerChoice choice_;
+  // Kept from step to step for their storage: the solid's corners and
+  // those near the plane.
+  std::vector<btVector3> corners_;
+  std::vector<NearCorner> near_;
 };
 
 }  // namespace tabletop

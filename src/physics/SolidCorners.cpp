@@ -23,6 +23,12 @@ constexpr btScalar kSameCorner = 1e-6;
 
 std::vector<btVector3> solidCorners(const btConvexShape& solid, const btVector3& down) {
   std::vector<btVector3> out;
+  solidCorners(solid, down, out);
+  return out;
+}
+
+void solidCorners(const btConvexShape& solid, const btVector3& down, std::vector<btVector3>& out) {
+  out.clear();
   if (solid.getShapeType() == CYLINDER_SHAPE_PROXYTYPE) {
     out.reserve(2 * kRimPoints);
     const btVector3 half = static_cast<const btCylinderShape&>(solid).getHalfExtentsWithMargin();
@@ -30,7 +36,7 @@ std::vector<btVector3> solidCorners(const btConvexShape& solid, const btVector3&
       const double a = 2.0 * SIMD_PI * i / kRimPoints;
       for (const double y : {-half.y(), half.y()}) out.emplace_back(half.x() * std::cos(a), y, half.z() * std::sin(a));
     }
-    return out;
+    return;
   }
   const auto& polyhedron = static_cast<const btPolyhedralConvexShape&>(solid);
   const btScalar outset = solid.getShapeType() == BOX_SHAPE_PROXYTYPE ? btScalar(0) : solid.getMargin();
@@ -40,18 +46,18 @@ std::vector<btVector3> solidCorners(const btConvexShape& solid, const btVector3&
     polyhedron.getVertex(i, v);
     out.push_back(v + down * outset);
   }
-  return out;
 }
 
-std::vector<NearCorner> nearCorners(const btConvexShape& solid, const btTransform& pose, const btVector3& normal,
-                                    btScalar offset, btScalar threshold, const Approach& approach) {
+void nearCorners(const btConvexShape& solid, const btTransform& pose, const btVector3& normal, btScalar offset,
+                 btScalar threshold, const Approach& approach, std::vector<btVector3>& corners,
+                 std::vector<NearCorner>& near) {
   const btRigidBody* moving = btRigidBody::upcast(approach.solid);
   const btRigidBody* support = btRigidBody::upcast(approach.support);
   const auto velocity = [](const btRigidBody* body, const btVector3& at) {
     return body ? body->getVelocityInLocalPoint(at - body->getCenterOfMassPosition()) : btVector3(0, 0, 0);
   };
-  const std::vector<btVector3> corners = solidCorners(solid, pose.getBasis().transpose() * -normal);
-  std::vector<NearCorner> near;
+  solidCorners(solid, pose.getBasis().transpose() * -normal, corners);
+  near.clear();
   near.reserve(corners.size());
   for (int c = 0; c < static_cast<int>(corners.size()); ++c) {
     const btVector3 vertex = pose * corners[static_cast<std::size_t>(c)];
@@ -62,7 +68,6 @@ std::vector<NearCorner> nearCorners(const btConvexShape& solid, const btTransfor
                     distance < normal.dot(pose.getOrigin()) - offset,
                     corners[static_cast<std::size_t>(c)].y() > 0 ? 1 : 0});
   }
-  return near;
 }
 
 void addCornerPoints(btManifoldResult& result, const std::vector<NearCorner>& chosen, const btVector3& normal,
@@ -95,7 +100,7 @@ void addCornerPoints(btManifoldResult& result, const std::vector<NearCorner>& ch
   if (distinct) distinct->setEachPointDistinct(false);
 }
 
-std::vector<NearCorner> CornerChoice::choose(const btConvexShape& solid, std::vector<NearCorner> near) {
+const std::vector<NearCorner>& CornerChoice::choose(const btConvexShape& solid, std::vector<NearCorner>& near) {
   btVector3 low, high;
   solid.getAabb(btTransform::getIdentity(), low, high);
   const btVector3 size = high - low;
@@ -119,7 +124,8 @@ std::vector<NearCorner> CornerChoice::choose(const btConvexShape& solid, std::ve
              near.end());
   const std::size_t wanted = std::min<std::size_t>(MANIFOLD_CACHE_SIZE, near.size());
 
-  std::vector<NearCorner> chosen;
+  std::vector<NearCorner>& chosen = chosen_;
+  chosen.clear();
   chosen.reserve(wanted);
   btScalar keptLowest = BT_LARGE_FLOAT, keptArrival = BT_LARGE_FLOAT;
   for (const int k : kept_) {

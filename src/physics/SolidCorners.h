@@ -11,6 +11,8 @@ namespace tabletop {
 /// vertices (a hull's drawn out by its margin along `down`, the way to the
 /// support, where its surface is), or points around a cylinder's two rims.
 std::vector<btVector3> solidCorners(const btConvexShape& solid, const btVector3& down);
+/// The same into `out` (cleared first), whose storage the caller keeps.
+void solidCorners(const btConvexShape& solid, const btVector3& down, std::vector<btVector3>& out);
 
 /// A corner near the support: its index in solidCorners(), its distance
 /// to the support's plane (m, negative inside), where it is (world), and
@@ -36,8 +38,11 @@ struct Approach {
 /// The corners of `solid` (at `pose`) within `threshold` of the plane
 /// normal . x = offset, on its side of it (`normal` points out of the
 /// support), each with where `approach` takes it.
-std::vector<NearCorner> nearCorners(const btConvexShape& solid, const btTransform& pose, const btVector3& normal,
-                                    btScalar offset, btScalar threshold, const Approach& approach);
+/// Into `near` (cleared first), with `corners` for the solid's corners:
+/// storage the caller keeps, as this runs for every pair every step.
+void nearCorners(const btConvexShape& solid, const btTransform& pose, const btVector3& normal, btScalar offset,
+                 btScalar threshold, const Approach& approach, std::vector<btVector3>& corners,
+                 std::vector<NearCorner>& near);
 
 /// Adds `chosen` to `result` as points of the solid on the support's plane;
 /// `supportFirst` when the support is the result's first body (the normal
@@ -77,12 +82,15 @@ class CornerChoice {
   /// are chosen again: well under the 0.1 mm a slide is held to.
   static constexpr btScalar kReach = 1e-5;
 
-  /// The contact points among `near` (in corner order, not empty).
-  std::vector<NearCorner> choose(const btConvexShape& solid, std::vector<NearCorner> near);
+  /// The contact points among `near` (in corner order, not empty), in
+  /// storage this choice keeps (valid until the next call); `near` is
+  /// pared down to the candidates on the way.
+  const std::vector<NearCorner>& choose(const btConvexShape& solid, std::vector<NearCorner>& near);
   void forget() { kept_.clear(); }
 
  private:
   std::vector<int> kept_;  // corner indices
+  std::vector<NearCorner> chosen_;
 };
 
 }  // namespace tabletop
