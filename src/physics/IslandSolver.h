@@ -10,6 +10,14 @@
 
 namespace tabletop {
 
+/// The MLCP solvers an IslandSolver hands to Bullet's: a base of its own,
+/// so that they are made before btMLCPSolver, which keeps a pointer to the
+/// active-set solver from its constructor on.
+struct IslandSolverParts {
+  btDantzigSolver dantzig_;
+  ActiveSetSolver activeSet_{dantzig_};  // the MLCP solver: a guess first, else dantzig_
+};
+
 /// The contact solver of full physics, one island at a time (its solver
 /// info's m_minimumSolverBatchSize must be 1, or small islands are batched
 /// together). Each island is solved one of two ways:
@@ -45,7 +53,7 @@ namespace tabletop {
 /// point turned a sliding cube. Swept islands keep Bullet's one row: the
 /// sweeps did not settle a cylinder standing on the table with two (it
 /// jiggled at 3e-5 m/s).
-class IslandSolver : public btMLCPSolver {
+class IslandSolver : private IslandSolverParts, public btMLCPSolver {
  public:
   IslandSolver(ContactSolver choice, int rowLimit, double gravity);
 
@@ -130,8 +138,6 @@ class IslandSolver : public btMLCPSolver {
   // Pivots the whole island's problem; once more, raised, if that fails.
   bool solveWholeIsland(const btContactSolverInfo& info);
 
-  btDantzigSolver dantzig_;
-  ActiveSetSolver activeSet_{dantzig_};  // the MLCP solver: a guess first, else dantzig_
   // The push out of penetration's problem on the normal rows (solveMLCP).
   struct NormalRows {
     std::vector<int> rows;  // their indices in the whole island's problem
