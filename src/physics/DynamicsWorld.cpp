@@ -170,7 +170,9 @@ void DynamicsWorld::performDiscreteCollisionDetection() {
 
 void DynamicsWorld::solveConstraints(btContactSolverInfo& solverInfo) {
   btDispatcher* dispatcher = getDispatcher();
-  if (dispatcher->getNumManifolds() == 0 && getBroadphase()->getOverlappingPairCache()->getNumOverlappingPairs() == 0) {
+  const bool untouched = dispatcher->getNumManifolds() == 0 &&
+                         getBroadphase()->getOverlappingPairCache()->getNumOverlappingPairs() == 0;
+  if (untouched) {
     solveUntouched(solverInfo);
     return;
   }
@@ -212,9 +214,6 @@ void DynamicsWorld::solveConstraints(btContactSolverInfo& solverInfo) {
   if (slipSpeed(*turned.manifold, *turned.point) <= still) sliding_.erase(contactOf(*turned.manifold));
 }
 
-// Solves the part. With kMayCutAtSlip, a part in which a slip turned round is
-// put back as it was before the solve and shortened to that time, and the
-// turn is returned: the part is to be solved again.
 void DynamicsWorld::solveUntouched(btContactSolverInfo& solverInfo) {
   solverInfo.m_timeStep = partLength_;
   meanTurn_.clear();
@@ -227,6 +226,9 @@ void DynamicsWorld::solveUntouched(btContactSolverInfo& solverInfo) {
   lastSlipEnd_.reset();
 }
 
+// Solves the part. With kMayCutAtSlip, a part in which a slip turned round is
+// put back as it was before the solve and shortened to that time, and the
+// turn is returned: the part is to be solved again.
 SlipTurn DynamicsWorld::solvePart(btContactSolverInfo& solverInfo, const ImpactScan& scan, PartSolve how) {
   btDispatcher* dispatcher = getDispatcher();
   // A part shorter than the step (cut at an impact, or what was left after

@@ -170,11 +170,11 @@ double earliestFaceExit(btDispatcher& dispatcher, double horizon, PointBoxes& bo
 
 namespace {
 
-// How a ball moves about what it touches at point `p` of manifold `m` in a part `length` s
-// long, where its distance from it bends: the centre's place relative to
-// the feature it moves about (an edge or corner of a box, or the other
-// ball's centre) and its velocity relative to it, less any part along an
-// edge; none over a box's face.
+// How a ball moves about what it touches at point `p` of manifold `m` in a
+// part `length` s long, where its distance from it bends: the centre's
+// place relative to the feature it moves about (an edge or corner of a
+// box, or the other ball's centre) and its velocity relative to it, less
+// any part along an edge; none over a box's face.
 std::optional<std::pair<btVector3, btVector3>> curvedPath(const btPersistentManifold& manifold, int m, int p,
                                                        double length, PointBoxes& boxes) {
   const btRigidBody* a = movingBody(manifold.getBody0());
