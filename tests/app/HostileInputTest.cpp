@@ -34,12 +34,36 @@ std::string freshDir(const std::string& name) {
   return dir;
 }
 
+// A folder of its own in the system's temporary folder, removed with its
+// files when the object goes: for a path that must be short (one written
+// into an entity name, at most 64 bytes), which one in the build tree may
+// not be.
+class ShortDir {
+ public:
+  ShortDir()
+      : path_((std::filesystem::temp_directory_path() / ("tabletop_" + std::to_string(getpid()))).string()) {
+    std::filesystem::remove_all(path_);
+    std::filesystem::create_directories(path_);
+  }
+  ~ShortDir() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  ShortDir(const ShortDir&) = delete;
+  ShortDir& operator=(const ShortDir&) = delete;
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_;
+};
+
 // Quotes and backquotes are printable, so such names are accepted; gnuplot
 // gets them in single quotes, where it substitutes nothing: the commands
 // they spell never run, and the plot is made.
 TEST(HostileInput, NamesNeverRunAsGnuplotCommands) {
   const std::string dir = freshDir("plot");
-  const std::string marker = dir + "/ran";
+  const ShortDir markerDir;
+  const std::string marker = markerDir.path() + "/ran";
   const std::string file = writeTemp("hostile_plot.json",
                                      scene("t' `touch " + marker + "` '", "A'\\n`touch " + marker + "`"));
   // The newline escape makes the entity name refused; the scenario name alone
