@@ -218,12 +218,21 @@ void DynamicsWorld::solveUntouched(btContactSolverInfo& solverInfo) {
   solverInfo.m_timeStep = partLength_;
   meanTurn_.clear();
   btDiscreteDynamicsWorld::solveConstraints(solverInfo);
-  solved_ = true;
-  stopped_.clear();
-  slipShare_.clear();
-  sliding_.clear();
+  closing_.clear();
+  noteSolved(closing_, {});
   bounced_.clear();
   lastSlipEnd_.reset();
+}
+
+void DynamicsWorld::noteSolved(const ClosingPoints& closing, const std::vector<Slip>& slipping) {
+  solved_ = true;
+  stopped_.clear();
+  for (const auto& [manifold, point] : closing) {
+    if (!(point->getAppliedImpulse() > 0)) continue;
+    stopped_.insert(manifold->getBody0());
+    stopped_.insert(manifold->getBody1());
+  }
+  findSlipStops(slipping);
 }
 
 // Solves the part. With kMayCutAtSlip, a part in which a slip turned round is
@@ -259,7 +268,7 @@ SlipTurn DynamicsWorld::solvePart(btContactSolverInfo& solverInfo, const ImpactS
   // The points closing at the part's start that meet inside it even at
   // that speed: a body one of them stops changes its velocity at once, not
   // smoothly. (A part cut at an impact reaches its point only at its end.)
-  std::vector<std::pair<const btPersistentManifold*, const btManifoldPoint*>>& closing = closing_;
+  ClosingPoints& closing = closing_;
   closing.clear();
   for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
     const btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
@@ -305,16 +314,7 @@ SlipTurn DynamicsWorld::solvePart(btContactSolverInfo& solverInfo, const ImpactS
   const SlipTurn turn = !mayTurn.empty() ? earliestSlipTurn(mayTurn, g, partLength_, kSlipShare)
                                          : SlipTurn{partLength_, nullptr, nullptr, btVector3(0, 0, 0), false};
   const bool turned = turn.manifold != nullptr;
-  if (!turned) {
-    solved_ = true;
-    stopped_.clear();
-    for (const auto& [manifold, point] : closing) {
-      if (!(point->getAppliedImpulse() > 0)) continue;
-      stopped_.insert(manifold->getBody0());
-      stopped_.insert(manifold->getBody1());
-    }
-    findSlipStops(slipping);
-  }
+  if (!turned) noteSolved(closing, slipping);
   for (const auto& [point, impulses] : carried) {
     point->m_appliedImpulse = impulses.x();
     point->m_appliedImpulseLateral1 = impulses.y();

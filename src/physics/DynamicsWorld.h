@@ -97,6 +97,12 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   // as Bullet solves it, leaving what solvePart leaves when there are no
   // contacts, without scanning for them.
   void solveUntouched(btContactSolverInfo& solverInfo);
+  // What a solved part leaves for the next, solvePart's and solveUntouched's
+  // alike: a solve has run, the bodies its closing points stopped, and the
+  // slips that stopped in it (none of either for a part with no contacts).
+  // Points closing at a part's start, with their manifolds.
+  using ClosingPoints = std::vector<std::pair<const btPersistentManifold*, const btManifoldPoint*>>;
+  void noteSolved(const ClosingPoints& closing, const std::vector<Slip>& slipping);
   std::vector<btManifoldPoint*> holdFrictionAlongLine();
   void findSlipStops(const std::vector<Slip>& slipping);
   // Slips slower than this share of what kinetic friction removes in a
@@ -153,7 +159,7 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   // solvePart's, kept to reuse their storage: the impulses a part carries
   // on, the points closing at its start and their bodies.
   std::vector<std::pair<btManifoldPoint*, btVector3>> partCarried_;
-  std::vector<std::pair<const btPersistentManifold*, const btManifoldPoint*>> closing_;
+  ClosingPoints closing_;
   BodySet stopping_;
   CarriedImpulses carried_;  // per non-static body, at the step's start
   PartStart partStart_;      // the part's start, while a slip may turn in it
