@@ -77,20 +77,8 @@ struct Carried {
   const BoxPiece* box;  // PointBoxes' own, valid through the scan
   int face;
 };
-// A body's up, against its gravity, kept while the points are of one body.
-class Up {
- public:
-  const btVector3& of(const btRigidBody& body) {
-    if (&body != body_) body_ = &body, up_ = -body.getGravity().normalized();
-    return up_;
-  }
-
- private:
-  const btRigidBody* body_ = nullptr;
-  btVector3 up_{0, 0, 0};
-};
 // Point `p` of manifold `m`.
-std::optional<Carried> carriedOnFace(const btPersistentManifold& manifold, int m, int p, bool carriedIsA, Up& up,
+std::optional<Carried> carriedOnFace(const btPersistentManifold& manifold, int m, int p, bool carriedIsA,
                                      PointBoxes& boxes) {
   const btManifoldPoint& point = manifold.getContactPoint(p);
   if (point.getDistance() > kOnBox) return std::nullopt;
@@ -99,7 +87,7 @@ std::optional<Carried> carriedOnFace(const btPersistentManifold& manifold, int m
   if (!body || body->getGravity().length2() == 0) return std::nullopt;
   // The normal points from B to A; carried from below, within 45 degrees.
   const btVector3 normal = carriedIsA ? point.m_normalWorldOnB : -point.m_normalWorldOnB;
-  if (normal.dot(up.of(*body)) < 0.7) return std::nullopt;
+  if (normal.dot(-body->getGravity().normalized()) < 0.7) return std::nullopt;
   const std::optional<BoxPiece>& box = boxes.at(manifold, m, p, carriedIsA ? 1 : 0);
   if (!box) return std::nullopt;
   const btVector3 local = box->place.getBasis().transpose() * normal;
@@ -145,12 +133,11 @@ double earliestFaceExit(btDispatcher& dispatcher, double horizon, PointBoxes& bo
   // The time depends on the body, the box and the face alone, which the
   // points of a contact share: each is timed once.
   std::optional<Carried> timed;
-  Up up;
   for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
     const btPersistentManifold& manifold = *dispatcher.getManifoldByIndexInternal(m);
     for (int p = 0; p < manifold.getNumContacts(); ++p) {
       for (const bool carriedIsA : {true, false}) {  // either body may be the one carried
-        const auto carried = carriedOnFace(manifold, m, p, carriedIsA, up, boxes);
+        const auto carried = carriedOnFace(manifold, m, p, carriedIsA, boxes);
         if (!carried || (timed && sameFace(*carried, *timed))) continue;
         timed = carried;
         const BoxPiece& box = *carried->box;
@@ -246,13 +233,12 @@ void holdEdgeCurvature(btDispatcher& dispatcher, double length, double stepLengt
 
 void holdEdgeLevers(btDispatcher& dispatcher, double length, std::vector<HeldPlace>& saved, PointBoxes& boxes) {
   constexpr double kOnSide = 1e-7;  // m: a clipped point lies on the edge to rounding
-  Up up;
   for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
     btPersistentManifold& manifold = *dispatcher.getManifoldByIndexInternal(m);
     for (int p = 0; p < manifold.getNumContacts(); ++p) {
       btManifoldPoint& point = manifold.getContactPoint(p);
       for (const bool carriedIsA : {true, false}) {
-        const auto carried = carriedOnFace(manifold, m, p, carriedIsA, up, boxes);
+        const auto carried = carriedOnFace(manifold, m, p, carriedIsA, boxes);
         if (!carried) continue;
         const BoxPiece& box = *carried->box;
         const int face = carried->face;
