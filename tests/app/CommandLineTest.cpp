@@ -473,13 +473,6 @@ TEST(CommandLine, CompareNamesWhereBulletDivergesAndPlotsIt) {
   EXPECT_NE(o.err.find("expected a file name ending in .png or .svg"), std::string::npos) << o.err;
 }
 
-// A fresh, empty directory for one test's output files.
-std::string freshDir(const std::string& name) {
-  const std::string dir = ::tabletop::testing::tempDir() + name + "_" + std::to_string(getpid());
-  std::filesystem::remove_all(dir);
-  return dir;
-}
-
 bool hasPartFiles(const std::string& dir) {
   for (const auto& f : std::filesystem::directory_iterator(dir)) {
     if (f.path().string().find(".part") != std::string::npos) return true;
@@ -489,7 +482,8 @@ bool hasPartFiles(const std::string& dir) {
 
 // Stills at the times asked for, each a PNG of the size asked for.
 TEST(CommandLine, RenderWritesStillsOfTheSizeAsked) {
-  const std::string dir = freshDir("tabletop_render_stills");
+  const TempFolder folder("render_stills", TempFolder::Start::Absent);
+  const std::string& dir = folder.path();
   const Outcome o = run(kBin + "tabletop render " + kScenarios + "example2_two_cubes.json --out-dir " + dir +
                         " --at 1.6,0,0.5 --size 320x240 --camera corner --mode compat");
   ASSERT_EQ(o.status, 0) << o.err;
@@ -500,13 +494,13 @@ TEST(CommandLine, RenderWritesStillsOfTheSizeAsked) {
     EXPECT_EQ(image.height, 240) << name;
   }
   EXPECT_FALSE(hasPartFiles(dir));
-  std::filesystem::remove_all(dir);
 }
 
 // Frames at --fps from 0 to the end of the run and half a second more,
 // encoded into a GIF (frames kept with --keep-frames) and an MP4.
 TEST(CommandLine, RenderMakesFramesAndVideos) {
-  const std::string dir = freshDir("tabletop_render_video");
+  const TempFolder folder("render_video", TempFolder::Start::Absent);
+  const std::string& dir = folder.path();
   Outcome o = run(kBin + "tabletop render " + kScenarios + "example2_two_cubes.json --out-dir " + dir +
                   " --fps 10 --size 160x120 --keep-frames --video " + dir + "/ex2.gif");
   ASSERT_EQ(o.status, 0) << o.err;
@@ -535,14 +529,14 @@ TEST(CommandLine, RenderMakesFramesAndVideos) {
   EXPECT_EQ(box.substr(4), "ftyp") << "not an MP4 file";
   EXPECT_TRUE(filesIn(dir, ".png").empty());
   EXPECT_FALSE(hasPartFiles(dir));
-  std::filesystem::remove_all(dir);
 }
 
 // A video alone needs no --out: the frames go to a private temporary
 // folder that is gone afterwards; --keep-frames needs a folder to keep
 // them in.
 TEST(CommandLine, RenderMakesAVideoAloneAndLeavesNoFrames) {
-  const std::string dir = freshDir("tabletop_render_video_alone");
+  const TempFolder folder("render_video_alone", TempFolder::Start::Absent);
+  const std::string& dir = folder.path();
   const std::string tmp = dir + "/tmp";
   std::filesystem::create_directories(tmp);
   const Outcome o = run("env TMPDIR=" + tmp + " " + kBin + "tabletop render " + kScenarios +
@@ -564,13 +558,13 @@ TEST(CommandLine, RenderMakesAVideoAloneAndLeavesNoFrames) {
   EXPECT_EQ(noFfmpeg.status, 1);
   EXPECT_EQ(lineCount(noFfmpeg.err), 1) << noFfmpeg.err;
   EXPECT_NE(noFfmpeg.err.find("ffmpeg is not installed"), std::string::npos) << noFfmpeg.err;
-  std::filesystem::remove_all(dir);
 }
 
 // Every --camera form renders; follow names an entity of the scene, and
 // a wrong form or name is refused in one line before anything is made.
 TEST(CommandLine, RenderTakesEveryCameraForm) {
-  const std::string dir = freshDir("tabletop_render_cameras");
+  const TempFolder folder("render_cameras", TempFolder::Start::Absent);
+  const std::string& dir = folder.path();
   for (const std::string camera : {"fit", "corner", "follow:B", "2,1.5,3:0,0.75,0"}) {
     const Outcome o = run(kBin + "tabletop render " + kScenarios + "example2_two_cubes.json --out-dir " + dir +
                           " --at 0 --size 80x60 --camera " + camera);
@@ -591,7 +585,8 @@ TEST(CommandLine, RenderTakesEveryCameraForm) {
 // Without ffmpeg the frames are still made, and one line says why there is
 // no video.
 TEST(CommandLine, RenderWithoutFfmpegKeepsTheFrames) {
-  const std::string dir = freshDir("tabletop_render_no_ffmpeg");
+  const TempFolder folder("render_no_ffmpeg", TempFolder::Start::Absent);
+  const std::string& dir = folder.path();
   const Outcome o = run("env PATH=/nonexistent " + kBin + "tabletop render " + kScenarios +
                         "example1_single_cube.json --out-dir " + dir + " --fps 5 --size 80x60 --video " + dir + "/a.mp4");
   EXPECT_EQ(o.status, 0) << o.err;
@@ -599,7 +594,6 @@ TEST(CommandLine, RenderWithoutFfmpegKeepsTheFrames) {
   EXPECT_NE(o.err.find("ffmpeg is not installed"), std::string::npos) << o.err;
   EXPECT_TRUE(std::filesystem::exists(dir + "/frame_00000.png"));
   EXPECT_FALSE(std::filesystem::exists(dir + "/a.mp4"));
-  std::filesystem::remove_all(dir);
 }
 
 // A run that takes more than half a second shows a bar with the time
@@ -633,7 +627,8 @@ TEST(CommandLine, HelpIsPlainWords) {
 }
 
 TEST(CommandLine, RenderRefusesBadOptionsInOneLine) {
-  const std::string dir = freshDir("tabletop_render_bad");
+  const TempFolder folder("render_bad", TempFolder::Start::Absent);
+  const std::string& dir = folder.path();
   const std::string base = kBin + "tabletop render " + kScenarios + "example1_single_cube.json --out-dir " + dir;
   Outcome o = run(base + " --size 12by3");
   EXPECT_EQ(o.status, 2);

@@ -27,42 +27,17 @@ std::string scene(const std::string& name, const std::string& entity) {
   "script": [{"push": {"entity": ")" + entity + R"(", "direction": "Left", "step": 0.5}}]})";
 }
 
-std::string freshDir(const std::string& name) {
-  const std::string dir = ::tabletop::testing::tempDir() + "hostile_" + name + "_" + std::to_string(getpid());
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
-
-// A folder of its own in the system's temporary folder, removed with its
-// files when the object goes: for a path that must be short (one written
-// into an entity name, at most 64 bytes), which one in the build tree may
-// not be.
-class ShortDir {
- public:
-  ShortDir()
-      : path_((std::filesystem::temp_directory_path() / ("tabletop_" + std::to_string(getpid()))).string()) {
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
-  ~ShortDir() {
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-  }
-  ShortDir(const ShortDir&) = delete;
-  ShortDir& operator=(const ShortDir&) = delete;
-  const std::string& path() const { return path_; }
-
- private:
-  std::string path_;
-};
-
 // Quotes and backquotes are printable, so such names are accepted; gnuplot
 // gets them in single quotes, where it substitutes nothing: the commands
 // they spell never run, and the plot is made.
 TEST(HostileInput, NamesNeverRunAsGnuplotCommands) {
-  const std::string dir = freshDir("plot");
-  const ShortDir markerDir;
+  const TempFolder folder("hostile_plot");
+  const std::string& dir = folder.path();
+  // The marker's path is written into an entity name, at most 64 bytes: a
+  // folder in the system's temporary folder, as one in the build tree may
+  // be too long.
+  const TempFolder markerDir("tabletop", TempFolder::Start::Empty,
+                             std::filesystem::temp_directory_path().string() + "/");
   const std::string marker = markerDir.path() + "/ran";
   const std::string file = writeTemp("hostile_plot.json",
                                      scene("t' `touch " + marker + "` '", "A'\\n`touch " + marker + "`"));
@@ -81,7 +56,8 @@ TEST(HostileInput, NamesNeverRunAsGnuplotCommands) {
 
 // A name with a comma and a quote is one field of the trace (RFC 4180).
 TEST(HostileInput, TraceQuotesNamesAsCsvFields) {
-  const std::string dir = freshDir("trace");
+  const TempFolder folder("hostile_trace");
+  const std::string& dir = folder.path();
   const std::string file = writeTemp("hostile_trace.json", scene("t", R"(A, \"b\")"));
   const Outcome o = runArgs({"run", file, "--trace", dir + "/t.csv", "--duration", "0.05"});
   ASSERT_EQ(o.status, 0) << o.err;
@@ -97,7 +73,8 @@ TEST(HostileInput, TraceQuotesNamesAsCsvFields) {
 // Outputs replace regular files only: a link to a device or a directory is
 // refused before the run, and the device stays a device.
 TEST(HostileInput, WritesOnlyReplaceRegularFiles) {
-  const std::string dir = freshDir("devices");
+  const TempFolder folder("hostile_devices");
+  const std::string& dir = folder.path();
   const std::string link = dir + "/null.json";
   std::filesystem::create_symlink("/dev/null", link);
   const std::string example = kScenarios + "example1_single_cube.json";
@@ -140,7 +117,8 @@ TEST(HostileInput, NumbersOnTheCommandLineMustBeFinite) {
 // Ctrl-C during a long run with --trace: status 130, no trace, no
 // temporary left beside it.
 TEST(HostileInput, InterruptedRunLeavesNoTemporary) {
-  const std::string dir = freshDir("interrupt");
+  const TempFolder folder("hostile_interrupt");
+  const std::string& dir = folder.path();
   const std::string file = writeTemp("hostile_long.json", R"({"version": 1, "name": "long",
     "settings": {"timestep": 1e-3, "duration": 3000, "end_at_rest": false},
     "entities": [{"name": "A", "shape": "sphere", "size": 0.05, "position": [0, 2, 0], "mass": 1}]})");
@@ -162,7 +140,8 @@ TEST(HostileInput, InterruptedRunLeavesNoTemporary) {
 
 // A trace larger than its cap is not written, and the run says why.
 TEST(HostileInput, TraceStaysUnderItsCap) {
-  const std::string dir = freshDir("cap");
+  const TempFolder folder("hostile_cap");
+  const std::string& dir = folder.path();
   const Outcome o = runArgs({"run", kScenarios + "example2_two_cubes.json", "--trace", dir + "/t.csv",
                              "--trace-max-mb", "0.01"});
   EXPECT_EQ(o.status, 1) << o.err;
