@@ -6,6 +6,7 @@
 
 #include "core/Angle.h"
 #include "physics/ContactMaterial.h"
+#include "physics/Reach.h"
 #include "physics/StepPush.h"
 
 namespace tabletop {
@@ -365,6 +366,7 @@ void World::step() {
 int World::substeps() const {
   if (settings_.maxSubsteps <= 1) return 1;
   double parts = 1.0;
+  const double gravity = world_->getGravity().length();
   for (std::size_t i = 0; i < entities_.size(); ++i) {
     const btRigidBody* body = entities_[i]->body();
     if (body->isStaticOrKinematicObject() || !body->isActive()) continue;
@@ -372,7 +374,14 @@ int World::substeps() const {
     const double travel = (body->getLinearVelocity().length() + body->getAngularVelocity().length() * t.turningReach) *
                           settings_.timestep;
     const double need = travel / (kSubstepTravel * t.inner);
-    if (!(need <= parts)) parts = need;  // keeps a NaN, which std::max would drop
+    if (need <= parts) continue;
+    // A body nothing is near strikes nothing in the step: it is stepped
+    // whole, however fast (a ball in flight). Near is within what it can
+    // move in the step, gravity's share included, and the distance ahead
+    // of touching at which contact points are made.
+    const double reach = travel + 0.5 * gravity * settings_.timestep * settings_.timestep + gContactBreakingThreshold;
+    if (std::isfinite(need) && !nearAnything(*world_, *body, reach)) continue;
+    parts = need;  // a NaN too, which std::max would drop
   }
   // Written so that a non-finite speed (a diverging run, which the
   // divergence guard then stops) gives the cap, never a cast of NaN.

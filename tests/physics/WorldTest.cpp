@@ -205,18 +205,20 @@ TEST(WorldModel, ABallOnTheFloorMeetsALegEitherWay) {
 }
 
 // A step is cut into as many equal parts as keep every point of every awake
-// body from moving more than a quarter of its smallest size in one:
+// body near something from moving more than a quarter of its smallest size
+// in one:
 //   parts = ceil((|v| + |w| R) dt / (h / 2)),
 // h the smallest half extent and R the farthest point's distance from the
 // centre (a cube's half diagonal, sqrt(3) h); a sphere's turn moves none of
-// its surface. The cap stands for any faster or non-finite speed.
+// its surface. The cap stands for any faster or non-finite speed. Here both
+// bodies stand on the floor.
 TEST_F(PhysicsFixture, AStepIsCutIntoPartsByHowFarThePointsMove) {
   const double dt = 1.0 / 60.0, h = 0.05;
   World& w = makeTable(dt);
   btRigidBody& cube = *w.addEntity(std::make_unique<Cube>("cube", 2 * h), 1.0, Material{},
-                                   btVector3(3, 2, 0), 0).body();
+                                   btVector3(3, seated(h), 0), 0).body();
   btRigidBody& ball = *w.addEntity(std::make_unique<Sphere>("ball", h), 1.0, Material{},
-                                   btVector3(-3, 2, 0), 0).body();
+                                   btVector3(-3, seated(h), 0), 0).body();
   const auto parts = [&](double travel) { return static_cast<int>(std::ceil(travel / (h / 2))); };
   EXPECT_EQ(w.substeps(), 1);
 
@@ -239,6 +241,45 @@ TEST_F(PhysicsFixture, AStepIsCutIntoPartsByHowFarThePointsMove) {
   EXPECT_EQ(w.substeps(), w.settings().maxSubsteps);
   ball.setLinearVelocity(btVector3(0, std::nan(""), 0));
   EXPECT_EQ(w.substeps(), w.settings().maxSubsteps);
+}
+
+// A body that nothing comes near within what it can move in a step,
+// (|v| + |w| R) dt + g dt^2 / 2, plus the 2 cm ahead of touching at which
+// contact points are made, strikes nothing in it and is stepped whole
+// however fast; once something is that near, the step is cut as above.
+// Over the floor, the table and another body.
+TEST_F(PhysicsFixture, AStepIsWholeForAFastBodyNothingIsNear) {
+  const double dt = 1.0 / 60.0, h = 0.05, g = 9.81;
+  World& w = makeTable(dt);
+  const double top = w.table().topHeight();
+  btRigidBody& ball = *w.addEntity(std::make_unique<Sphere>("ball", h), 1.0, Material{},
+                                   btVector3(-3, 2, 0), 0).body();
+  w.addEntity(std::make_unique<Cube>("cube", 2 * h), 1.0, Material{}, btVector3(1, 2, 0), 0);
+  const double speed = 6.1;  // m/s: five parts when near (the test above)
+  const double reach = speed * dt + 0.5 * g * dt * dt + gContactBreakingThreshold;
+  const auto place = [&](btRigidBody& body, const btVector3& at) {
+    btTransform pose = body.getWorldTransform();
+    pose.setOrigin(at);
+    body.setWorldTransform(pose);
+  };
+  ball.setLinearVelocity(btVector3(0, -speed, 0));
+  EXPECT_EQ(w.substeps(), 1) << "falling, 2 m up";
+  // Its bounding box's bottom a millimetre either side of the reach.
+  btVector3 low, high;
+  ball.getCollisionShape()->getAabb(btTransform::getIdentity(), low, high);
+  place(ball, btVector3(-3, -low.y() + reach + 1e-3, 0));
+  EXPECT_EQ(w.substeps(), 1) << "just out of reach of the floor";
+  place(ball, btVector3(-3, -low.y() + reach - 1e-3, 0));
+  EXPECT_EQ(w.substeps(), 5) << "just within reach of the floor";
+  // Sideways, high over the table's middle; then beside a cube in the air,
+  // well out of reach of it and well within.
+  ball.setLinearVelocity(btVector3(speed, 0, 0));
+  place(ball, btVector3(-0.5, top + 0.3, 0));
+  EXPECT_EQ(w.substeps(), 1) << "high over the table";
+  place(ball, btVector3(1 - 2 * h - 2 * reach, 2, 0));
+  EXPECT_EQ(w.substeps(), 1) << "out of reach of the cube";
+  place(ball, btVector3(1 - 2 * h - reach / 2, 2, 0));
+  EXPECT_EQ(w.substeps(), 5) << "within reach of the cube";
 }
 
 // When a step is cut into parts, the contact impulses carried over as the
