@@ -23,6 +23,10 @@ constexpr double kLeastGravity = 0.01;
 // How far an entity may move in one part of a step, as a share of its
 // smallest half extent (World::substeps).
 constexpr double kSubstepTravel = 0.5;
+// How far an entity's turn may move its surface in a step, as a share of
+// its smallest half extent, for it to slide on what carries it: a body
+// that rocks or tumbles there is cut into parts as before.
+constexpr double kSlideTurn = 0.05;
 
 
 btQuaternion yawRotation(double degrees) {
@@ -371,16 +375,18 @@ int World::substeps() const {
     const btRigidBody* body = entities_[i]->body();
     if (body->isStaticOrKinematicObject() || !body->isActive()) continue;
     const Tracker& t = trackers_[i];
-    const double travel = (body->getLinearVelocity().length() + body->getAngularVelocity().length() * t.turningReach) *
-                          settings_.timestep;
+    const double turn = body->getAngularVelocity().length() * t.turningReach * settings_.timestep;
+    const double travel = body->getLinearVelocity().length() * settings_.timestep + turn;
     const double need = travel / (kSubstepTravel * t.inner);
     if (need <= parts) continue;
     // A body nothing is near strikes nothing in the step: it is stepped
     // whole, however fast (a ball in flight). Near is within what it can
     // move in the step, gravity's share included, and the distance ahead
-    // of touching at which contact points are made.
+    // of touching at which contact points are made. What it slides on is
+    // not near, unless it turns (its corners could come down into it).
     const double reach = travel + 0.5 * gravity * settings_.timestep * settings_.timestep + gContactBreakingThreshold;
-    if (std::isfinite(need) && !nearAnything(*world_, *body, reach)) continue;
+    const double slideStep = turn <= kSlideTurn * t.inner ? settings_.timestep : 0.0;
+    if (std::isfinite(need) && !nearAnything(*world_, *body, reach, slideStep)) continue;
     parts = need;  // a NaN too, which std::max would drop
   }
   // Written so that a non-finite speed (a diverging run, which the
