@@ -365,8 +365,9 @@ void World::step() {
 // than that in one step strikes what it meets part-way into it, at a time
 // of impact only a shorter step finds, and a body turning fast reaches the
 // floor with corners the step's start did not find
-// (docs/bullet-corrections.md). Slow scenes and bodies at rest are stepped
-// whole.
+// (docs/bullet-corrections.md). Slow scenes, bodies at rest, and fast
+// bodies that nothing but what they slide on is near are stepped whole
+// (docs/hard-cases.md).
 int World::substeps() const {
   if (settings_.maxSubsteps <= 1) return 1;
   double parts = 1.0;

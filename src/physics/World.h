@@ -27,7 +27,7 @@ inline Vec3 toVec3(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
 /// A scene in full Bullet physics (mode "bullet"): owns the Bullet pipeline,
 /// the Table, the Ground and the entities, and steps them at a fixed rate,
 /// each step cut into equal parts while a body moves fast for its size
-/// (substeps()).
+/// near something it could strike (substeps()).
 ///
 /// After every step it updates each entity's report status (3.4), its
 /// support, and whether it is at rest, and records the events: contacts
