@@ -202,7 +202,8 @@ void CarriedImpulses::restore(btDispatcher& dispatcher) {
   if (saved_.empty()) return;
   for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
     btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
-    std::vector<Saved*> gone;
+    std::vector<Saved*>& gone = gone_;
+    gone.clear();
     const auto [first, last] = std::equal_range(saved_.begin(), saved_.end(), manifold, Before{});
     for (auto s = first; s != last; ++s) {
       if (s->body0 != manifold->getBody0() || s->body1 != manifold->getBody1()) continue;

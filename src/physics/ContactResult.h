@@ -96,6 +96,7 @@ class CarriedImpulses {
   };
   struct Before;
   std::vector<Saved> saved_;  // by manifold
+  std::vector<Saved*> gone_;  // restore's, kept to reuse its storage
 };
 
 /// Removes the points of `manifold` that no longer mark where its bodies

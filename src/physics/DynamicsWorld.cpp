@@ -211,7 +211,10 @@ void DynamicsWorld::solveConstraints(btContactSolverInfo& solverInfo) {
   // where a slip made at its start (by rolling resistance) is no stop; one
   // left short of zero (the time is estimated) is cut again there.
   const double still = kSlipShare * turned.point->m_combinedFriction * getGravity().length() * partLength_;
-  if (slipSpeed(*turned.manifold, *turned.point) <= still) sliding_.erase(contactOf(*turned.manifold));
+  if (slipSpeed(*turned.manifold, *turned.point) <= still) {
+    const auto at = std::lower_bound(sliding_.begin(), sliding_.end(), contactOf(*turned.manifold));
+    if (at != sliding_.end() && *at == contactOf(*turned.manifold)) sliding_.erase(at);
+  }
 }
 
 void DynamicsWorld::solveUntouched(btContactSolverInfo& solverInfo) {
@@ -279,8 +282,9 @@ SlipTurn DynamicsWorld::solvePart(btContactSolverInfo& solverInfo, const ImpactS
     }
   }
   const double g = getGravity().length();
-  const std::vector<Slip> slipping =
-      secondOrder_ ? slippingPoints(*dispatcher, g, partLength_, kSlipShare) : std::vector<Slip>{};
+  std::vector<Slip>& slipping = slipping_;
+  slipping.clear();
+  if (secondOrder_) slippingPoints(*dispatcher, g, partLength_, kSlipShare, slipping);
   // A body one of those points may stop keeps Bullet's rows on its other
   // points: held at the mean, they let a cone's rim, landing over a box's
   // edge, go 0.75 mm into the box at 60 Hz (0.29 mm without).
@@ -298,12 +302,12 @@ SlipTurn DynamicsWorld::solvePart(btContactSolverInfo& solverInfo, const ImpactS
   // makes a small slip of its own at a part's start, which friction stops
   // at once, and cutting there cut every part of a rolling ball.
   const auto counts = [&](const Slip& slip) {
-    return sliding_.count(contactOf(*slip.manifold)) > 0 ||
+    return slid(sliding_, contactOf(*slip.manifold)) ||
            slip.velocity.length() > slip.point->m_combinedFriction * g * partLength_;
   };
-  const std::vector<Slip> mayTurn = how == PartSolve::kMayCutAtSlip && !impacts
-                                        ? slipsThatMayTurn(*dispatcher, slipping, counts)
-                                        : std::vector<Slip>{};
+  std::vector<Slip>& mayTurn = mayTurn_;
+  mayTurn.clear();
+  if (how == PartSolve::kMayCutAtSlip && !impacts) slipsThatMayTurn(*dispatcher, slipping, counts, mayTurn);
   if (!mayTurn.empty()) partStart_.save(m_nonStaticRigidBodies, *dispatcher);
   // The island pass sorts Bullet's union-find in place, and a second pass
   // over it scrambles the islands (DynamicsWorldImpacts.cpp): solved again,

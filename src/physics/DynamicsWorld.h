@@ -143,6 +143,7 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   };
   std::unordered_map<const btCollisionObject*, SlipStop> slipShare_;
   SlidingContacts sliding_;  // contacts whose friction was at its limit in it
+  SlidingContacts slidingNext_;  // findSlipStops', kept to reuse its storage
   // A contact's friction in the last solve, its limit, and its points'
   // normals by their loads, turned one way (findSlipStops; kept to reuse
   // its storage).
@@ -160,6 +161,8 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   // on, the points closing at its start and their bodies.
   std::vector<std::pair<btManifoldPoint*, btVector3>> partCarried_;
   ClosingPoints closing_;
+  std::vector<Slip> slipping_;  // the points slipping at its start
+  std::vector<Slip> mayTurn_;   // those whose slip may turn in it
   BodySet stopping_;
   CarriedImpulses carried_;  // per non-static body, at the step's start
   PartStart partStart_;      // the part's start, while a slip may turn in it

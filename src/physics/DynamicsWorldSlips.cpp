@@ -76,14 +76,15 @@ void DynamicsWorld::findSlipStops(const std::vector<Slip>& slipping) {
   // part, a rolling body's made by its rolling resistance, is not one that
   // stops); a body slipped for the share of the part until the first of
   // its contacts stopped.
-  SlidingContacts sliding;
+  SlidingContacts& sliding = slidingNext_;
+  sliding.clear();
   for (const auto& [key, u] : used) {
     if (!(u.limit > 0) || !(u.normal.length2() > 0)) continue;
     if (u.friction >= (1.0 - kSlipShare) * u.limit) {
-      sliding.insert(key);
+      sliding.push_back(key);  // in order, as `used` is
       continue;
     }
-    if (sliding_.count(key) == 0) continue;
+    if (!slid(sliding_, key)) continue;
     const double share = u.friction / u.limit;
     for (const btCollisionObject* body : {u.manifold->getBody0(), u.manifold->getBody1()}) {
       if (body->isStaticOrKinematicObject()) continue;
@@ -91,7 +92,7 @@ void DynamicsWorld::findSlipStops(const std::vector<Slip>& slipping) {
       if (known == slipShare_.end() || share < known->second.share) slipShare_[body] = {share, u.normal.normalized()};
     }
   }
-  sliding_ = std::move(sliding);
+  std::swap(sliding_, slidingNext_);
 }
 
 }  // namespace tabletop

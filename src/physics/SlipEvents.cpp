@@ -32,8 +32,8 @@ bool touchesAnother(btDispatcher& dispatcher, const btCollisionObject* object) {
 
 }  // namespace
 
-std::vector<Slip> slippingPoints(btDispatcher& dispatcher, double g, double length, double share) {
-  std::vector<Slip> out;
+void slippingPoints(btDispatcher& dispatcher, double g, double length, double share, std::vector<Slip>& out) {
+  out.clear();
   for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
     const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
     for (int p = 0; p < manifold->getNumContacts(); ++p) {
@@ -42,7 +42,6 @@ std::vector<Slip> slippingPoints(btDispatcher& dispatcher, double g, double leng
       if (slip.length() > share * point.m_combinedFriction * g * length) out.push_back({manifold, &point, slip});
     }
   }
-  return out;
 }
 
 namespace {
@@ -65,9 +64,9 @@ double slipPerImpulse(const btPersistentManifold& manifold, const btManifoldPoin
 
 }  // namespace
 
-std::vector<Slip> slipsThatMayTurn(btDispatcher& dispatcher, const std::vector<Slip>& slips,
-                                   const std::function<bool(const Slip&)>& counts) {
-  std::vector<Slip> out;
+void slipsThatMayTurn(btDispatcher& dispatcher, const std::vector<Slip>& slips,
+                      const std::function<bool(const Slip&)>& counts, std::vector<Slip>& out) {
+  out.clear();
   for (const Slip& slip : slips) {
     const btCollisionObject* a = slip.manifold->getBody0();
     const btCollisionObject* b = slip.manifold->getBody1();
@@ -75,7 +74,6 @@ std::vector<Slip> slipsThatMayTurn(btDispatcher& dispatcher, const std::vector<S
     if (!(isMoving(*a) && isMoving(*b)) && !touchesAnother(dispatcher, a) && !touchesAnother(dispatcher, b)) continue;
     out.push_back(slip);
   }
-  return out;
 }
 
 SlipTurn earliestSlipTurn(const std::vector<Slip>& slips, double g, double length, double share) {

@@ -1,7 +1,7 @@
 #pragma once
 
 #include <functional>
-#include <set>
+#include <algorithm>
 #include <utility>
 #include <vector>
 
@@ -26,10 +26,14 @@ namespace tabletop {
 
 /// A contact, named by its two bodies (a manifold may be made anew for the
 /// same pair), and the contacts whose friction held at its limit through a
-/// part: they slid through it.
+/// part, in order (a sorted vector: it is made afresh every part): they
+/// slid through it.
 using ContactKey = std::pair<const btCollisionObject*, const btCollisionObject*>;
 inline ContactKey contactOf(const btPersistentManifold& manifold) { return {manifold.getBody0(), manifold.getBody1()}; }
-using SlidingContacts = std::set<ContactKey>;
+using SlidingContacts = std::vector<ContactKey>;
+inline bool slid(const SlidingContacts& sliding, const ContactKey& key) {
+  return std::binary_search(sliding.begin(), sliding.end(), key);
+}
 
 /// A point whose bodies slide over each other at a part's start.
 struct Slip {
@@ -41,7 +45,8 @@ struct Slip {
 /// The points whose slip at the start of a part `length` s long is more
 /// than `share` of what kinetic friction (under gravity `g`, m/s^2) takes
 /// from it in the part: those whose friction may stop or turn it there.
-std::vector<Slip> slippingPoints(btDispatcher& dispatcher, double g, double length, double share);
+/// Written to `out` (its storage kept from part to part).
+void slippingPoints(btDispatcher& dispatcher, double g, double length, double share, std::vector<Slip>& out);
 
 /// Of `slips`, those on contacts that `counts` and between bodies of which
 /// one carries or rides on another moving body: the slips a part may be
@@ -49,9 +54,9 @@ std::vector<Slip> slippingPoints(btDispatcher& dispatcher, double g, double leng
 /// DynamicsWorld's slip share already places exactly; cut there, a
 /// standing cylinder was left rocking on its rim by the sweeps of the part
 /// after (0.016 degrees of turn at 30 Hz). Found before the solve, so a
-/// part with none is not saved to be solved again.
-std::vector<Slip> slipsThatMayTurn(btDispatcher& dispatcher, const std::vector<Slip>& slips,
-                                   const std::function<bool(const Slip&)>& counts);
+/// part with none is not saved to be solved again. Written to `out`.
+void slipsThatMayTurn(btDispatcher& dispatcher, const std::vector<Slip>& slips,
+                      const std::function<bool(const Slip&)>& counts, std::vector<Slip>& out);
 
 /// After a part's solve, the time from its start, s, at which the earliest
 /// slip of `slips` (slipsThatMayTurn's) that ended the part turned round or
