@@ -212,8 +212,8 @@ void DynamicsWorld::solveConstraints(btContactSolverInfo& solverInfo) {
   // left short of zero (the time is estimated) is cut again there.
   const double still = kSlipShare * turned.point->m_combinedFriction * getGravity().length() * partLength_;
   if (slipSpeed(*turned.manifold, *turned.point) <= still) {
-    const auto at = std::lower_bound(sliding_.begin(), sliding_.end(), contactOf(*turned.manifold));
-    if (at != sliding_.end() && *at == contactOf(*turned.manifold)) sliding_.erase(at);
+    const auto [first, last] = std::equal_range(sliding_.begin(), sliding_.end(), contactOf(*turned.manifold));
+    sliding_.erase(first, last);
   }
 }
 

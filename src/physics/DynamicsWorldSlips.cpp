@@ -81,7 +81,7 @@ void DynamicsWorld::findSlipStops(const std::vector<Slip>& slipping) {
   for (const auto& [key, u] : used) {
     if (!(u.limit > 0) || !(u.normal.length2() > 0)) continue;
     if (u.friction >= (1.0 - kSlipShare) * u.limit) {
-      sliding.push_back(key);  // in order, as `used` is
+      sliding.push_back(key);  // in order and once each, as `used` is
       continue;
     }
     if (!slid(sliding_, key)) continue;

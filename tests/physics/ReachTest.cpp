@@ -32,7 +32,8 @@ void place(btRigidBody& body, const btVector3& at) {
 // A body that nothing comes near within what it can move in a step,
 // (|v| + |w| R) dt + g dt^2 / 2, plus the 2 cm ahead of touching at which
 // contact points are made, strikes nothing in it and is stepped whole
-// however fast; once something is that near, the step is cut as above.
+// however fast; once something is that near, the step is cut into parts
+// by how far its points move (WorldTest).
 // Over the floor, the table and another body.
 TEST_F(PhysicsFixture, AStepIsWholeForAFastBodyNothingIsNear) {
   const double dt = 1.0 / 60.0, h = 0.05, g = kG;
