@@ -45,7 +45,7 @@ class Near : public btBroadphaseAabbCallback {
   bool process(const btBroadphaseProxy* proxy) override {
     const auto* other = static_cast<const btCollisionObject*>(proxy->m_clientObject);
     if (other == self_ || found_) return true;
-    if (slideStep_ > 0 && slidesOn(*world_->getDispatcher(), *self_, *other, slideStep_, reach_)) return true;
+    if (slideStep_ > 0 && slidesOn(*world_->getPairCache(), *self_, *other, slideStep_, reach_)) return true;
     const btCollisionShape& shape = *other->getCollisionShape();
     if (shape.getShapeType() == STATIC_PLANE_PROXYTYPE) {
       found_ = reachesPlane(*other);
@@ -99,17 +99,22 @@ bool nearAnything(btCollisionWorld& world, const btRigidBody& body, double reach
   return near.found();
 }
 
-bool slidesOn(btDispatcher& dispatcher, const btRigidBody& body, const btCollisionObject& support, double timestep,
-              double reach) {
+bool slidesOn(btOverlappingPairCache& pairs, const btRigidBody& body, const btCollisionObject& support,
+              double timestep, double reach) {
   const btVector3 gravity = body.getGravity();
   if (!(gravity.length2() > 0)) return false;
   const btVector3 up = -gravity.normalized();
   if (!staysOver(body, support, up, reach)) return false;
+  // findPair only reads the proxies, though Bullet declares them mutable.
+  btBroadphasePair* pair = pairs.findPair(const_cast<btBroadphaseProxy*>(body.getBroadphaseHandle()),
+                                          const_cast<btBroadphaseProxy*>(support.getBroadphaseHandle()));
+  if (pair == nullptr || pair->m_algorithm == nullptr) return false;
+  btManifoldArray manifolds;
+  pair->m_algorithm->getAllContactManifolds(manifolds);
   const btRigidBody* under = btRigidBody::upcast(&support);
-  for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
-    const btPersistentManifold& manifold = *dispatcher.getManifoldByIndexInternal(m);
-    const bool isA = manifold.getBody0() == &body && manifold.getBody1() == &support;
-    if (!isA && !(manifold.getBody1() == &body && manifold.getBody0() == &support)) continue;
+  for (int m = 0; m < manifolds.size(); ++m) {
+    const btPersistentManifold& manifold = *manifolds[m];
+    const bool isA = manifold.getBody0() == &body;
     for (int p = 0; p < manifold.getNumContacts(); ++p) {
       const btManifoldPoint& point = manifold.getContactPoint(p);
       if (point.getDistance() > kOnSurface) continue;

@@ -20,8 +20,9 @@ bool nearAnything(btCollisionWorld& world, const btRigidBody& body, double reach
 /// the body's up (against its gravity), at which the body does not close
 /// on the support faster than its gravity gives in the step; and the
 /// body's box, grown by `reach`, stays within the support's across up, so
-/// that no edge of the support comes under it (a plane has none).
-bool slidesOn(btDispatcher& dispatcher, const btRigidBody& body, const btCollisionObject& support, double timestep,
-              double reach);
+/// that no edge of the support comes under it (a plane has none). The
+/// pair's points are found through the broadphase's `pairs` cache.
+bool slidesOn(btOverlappingPairCache& pairs, const btRigidBody& body, const btCollisionObject& support,
+              double timestep, double reach);
 
 }  // namespace tabletop
