@@ -150,12 +150,14 @@ class World : public Simulation {
   std::vector<Tracker> trackers_;
   // The entity pairs touching after the last step, sorted; and scratch
   // kept to avoid reallocating: the contacts, the pairs touching now, each
-  // entity's support and the impulse it gives.
+  // entity's support, the impulse it gives and the one its support before
+  // gives.
   std::vector<std::pair<int, int>> touching_;
   std::vector<Contact> contacts_;
   std::vector<std::pair<int, int>> touchingNow_;
   std::vector<int> supports_;
   std::vector<double> strongest_;
+  std::vector<double> currentPush_;
   std::vector<Event> events_;
   double entityFriction_ = 0.0;  // the largest friction coefficient of any entity
   double time_ = 0.0;

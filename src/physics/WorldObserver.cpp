@@ -18,6 +18,11 @@ constexpr double kTouchDistance = 1e-4;  // m
 constexpr double kApartDistance = 1e-3;  // m
 // A contact supports an entity when its normal points up within 60 degrees.
 constexpr double kSupportNormalY = 0.5;
+// An entity's support stays what it was while that still pushes it up with
+// at least this share of the hardest push: a cube resting across two
+// others, each carrying half, would otherwise change support (and "land")
+// whenever rounding tips the balance.
+constexpr double kKeepSupportShare = 0.1;
 
 }  // namespace
 
@@ -121,28 +126,39 @@ void World::observe(bool emit) {
   touching_.swap(touching);
 
   // Support: the body pushing each entity up hardest (ties: the lower
-  // index, the table and ground first).
+  // index, the table and ground first), or the one before while it still
+  // pushes with kKeepSupportShare of that.
   std::vector<int>& support = supports_;
   std::vector<double>& strongest = strongest_;
+  std::vector<double>& current = currentPush_;
   support.assign(n, kNoSupport);
   strongest.assign(n, -1.0);
+  current.assign(n, -1.0);
   for (const Contact& c : contacts_) {
     if (c.support > strongest[c.entity]) {
       strongest[c.entity] = c.support;
       support[c.entity] = c.other;
     }
+    if (c.other == trackers_[static_cast<std::size_t>(c.entity)].support) current[c.entity] = c.support;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (current[i] >= 0 && current[i] >= kKeepSupportShare * strongest[i]) support[i] = trackers_[i].support;
   }
 
   for (std::size_t i = 0; i < n; ++i) {
     Shape& shape = *entities_[i];
     Tracker& tracker = trackers_[i];
 
-    // A new support that is not the last one means the entity landed.
+    // A support after none that is not the last one means the entity
+    // landed. A body that moves from one support to another without
+    // leaving them (a cube that lands across two, the first to touch it
+    // carrying nothing, the other all of its weight) has not.
     if (support[i] != tracker.support) {
+      const bool airborne = tracker.support == kNoSupport;
       tracker.support = support[i];
       shape.setSupport(support[i] == kNoSupport ? Support() : participant(support[i]));
       if (support[i] != kNoSupport) {
-        if (emit && support[i] != tracker.lastSupport) {
+        if (emit && airborne && support[i] != tracker.lastSupport) {
           Event e;
           e.t = landingTime(tracker, shape, support[i]);
           e.type = EventType::Lands;
