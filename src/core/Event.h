@@ -15,7 +15,7 @@ enum class EventType {
   Rotate,        ///< an entity was turned about its vertical axis (entity)
   ContactBegin,  ///< two entities started touching (entity, other)
   LeavesTable,   ///< an entity's centre passed a table edge (entity, edge)
-  Lands,         ///< an entity came to rest on a new support (entity, on)
+  Lands,         ///< an entity in the air came down on a new support (entity, on)
   AtRest,        ///< an entity stopped moving (entity)
 };
 
