@@ -29,7 +29,6 @@ const ShapeSize kSolids[] = {{"cube", "0.1", 0, 0.05},
                              {"cylinder", "[0.05, 0.03, 0.1]", 0, ShapeGeometry::cylinder(0.05, 0.03, 0.1).below()}};
 const ShapeSize kSpheres[] = {{"sphere", "0.05", 0.05, 0.05}, {"sphere", "0.1", 0.1, 0.1}};
 const double kRestitutions[] = {0.0, 0.5, 0.9};
-const char* const kSupports[] = {"table", "ground", "slab"};
 const double kAngles[] = {0.0, 45.0, 77.0, 200.0};
 
 constexpr double kSlideImpulse = 2.4;  // N s: v0 = 1.6 m/s
@@ -95,10 +94,10 @@ std::vector<LawPoint> measureLaws(const std::vector<double>& rates, const Measur
   for (const ShapeSize& s : kSpheres) jobs.emplace_back("step", &s);
   jobs.emplace_back("bounce", &kSpheres[0]);
   for (const ShapeSize& s : kSolids) jobs.emplace_back("bounce", &s);
-  hooks.start(static_cast<long>(jobs.size() * std::size(kSupports) * rates.size()));
+  hooks.start(static_cast<long>(jobs.size() * std::size(kLawSupports) * rates.size()));
   std::vector<LawPoint> points;
   for (const auto& [law, shape] : jobs) {
-    for (const char* support : kSupports) {
+    for (const char* support : kLawSupports) {
       for (const double rate : rates) {
         if (hooks.stop()) return points;
         points.push_back(law == "bounce" ? measureBounce(*shape, support, rate) : measure(law, *shape, support, rate));

@@ -41,12 +41,16 @@ void FaceVertices::clearOtherwise() {
 
 void FaceVertices::processCollision(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
                                     const btDispatcherInfo& info, btManifoldResult* result) {
-  // Two boxes: the first whose face the other rests on, the first body's
-  // tried first, so the roles stay put from step to step.
+  // Two bodies with faces: the first whose face the other rests on, a
+  // box's before a cylinder's, else the first body's, so the roles stay put
+  // from step to step.
   const bool box0 = isBox(*body0->getCollisionShape());
   const bool box1 = isBox(*body1->getCollisionShape());
-  if ((box0 && touchFace(body0, body1, true, info.m_timeStep, result)) ||
-      (box1 && touchFace(body1, body0, false, info.m_timeStep, result))) {
+  const bool firstFaced = box0 || (!box1 && hasFaces(*body0->getCollisionShape()));
+  const btCollisionObjectWrapper* faced = firstFaced ? body0 : body1;
+  const btCollisionObjectWrapper* other = firstFaced ? body1 : body0;
+  if (touchFace(faced, other, firstFaced, info.m_timeStep, result) ||
+      (hasFaces(*other->getCollisionShape()) && touchFace(other, faced, !firstFaced, info.m_timeStep, result))) {
     clearOtherwise();
     return;
   }
@@ -59,7 +63,7 @@ void FaceVertices::processCollision(const btCollisionObjectWrapper* body0, const
   otherwise_->processCollision(body0, body1, info, result);
   if (box0 && box1) {
     clipApart(body0, body1, result);
-  } else if (addCornersOverFace(box0 ? body0 : body1, box0 ? body1 : body0, box0, info.m_timeStep, result)) {
+  } else if (addCornersOverFace(faced, other, firstFaced, info.m_timeStep, result)) {
     return;
   }
   manifold_->clearManifold();
@@ -89,20 +93,28 @@ void FaceVertices::clipApart(const btCollisionObjectWrapper* body0, const btColl
   result->refreshContactPoints();
 }
 
+bool FaceVertices::hasFaces(const btCollisionShape& shape) {
+  return isBox(shape) || shape.getShapeType() == CYLINDER_SHAPE_PROXYTYPE;
+}
+
 FaceVertices::Face FaceVertices::outerFace(const btCollisionObjectWrapper* boxWrap,
                                            const btCollisionObjectWrapper* solidWrap, btScalar timeStep) {
   near_.clear();
-  const auto* box = static_cast<const btBoxShape*>(boxWrap->getCollisionShape());
+  const btCollisionShape& faced = *boxWrap->getCollisionShape();
   const auto* solid = static_cast<const btConvexShape*>(solidWrap->getCollisionShape());
   const btTransform& boxPose = boxWrap->getWorldTransform();
   const btTransform& solidPose = solidWrap->getWorldTransform();
-  const btVector3 half = box->getHalfExtentsWithMargin();
+  const btVector3 half = halfExtents(faced);
+  // A box's six faces; a cylinder's two ends, across its axis.
+  const bool cylinder = !isBox(faced);
+  const int first = cylinder ? static_cast<const btCylinderShape&>(faced).getUpAxis() : 0;
+  const int last = cylinder ? first : 2;
 
   // The face the solid lies farthest out from, along its normal: where it
-  // rests if it rests on the box.
+  // rests if it rests on the body.
   Face face;
   btScalar side = 1, separation = -BT_LARGE_FLOAT;
-  for (int i = 0; i < 3; ++i) {
+  for (int i = first; i <= last; ++i) {
     for (const btScalar s : {btScalar(1), btScalar(-1)}) {
       const btVector3 n = boxPose.getBasis().getColumn(i) * s;
       const btVector3 lowest = solidPose * solid->localGetSupportingVertex(solidPose.getBasis().transpose() * -n);
@@ -111,6 +123,7 @@ FaceVertices::Face FaceVertices::outerFace(const btCollisionObjectWrapper* boxWr
     }
   }
   face.normal = boxPose.getBasis().getColumn(face.axis) * side;
+  face.round = cylinder;
   const btScalar offset = face.normal.dot(boxPose.getOrigin()) + half[face.axis];
   if (face.normal.dot(solidPose.getOrigin()) <= offset) return face;  // its centre is not out over the face
   nearCorners(*solid, solidPose, face.normal, offset, manifold_->getContactBreakingThreshold(),
@@ -119,9 +132,19 @@ FaceVertices::Face FaceVertices::outerFace(const btCollisionObjectWrapper* boxWr
   return face;
 }
 
+btVector3 FaceVertices::halfExtents(const btCollisionShape& faced) {
+  return isBox(faced) ? static_cast<const btBoxShape&>(faced).getHalfExtentsWithMargin()
+                      : static_cast<const btCylinderShape&>(faced).getHalfExtentsWithMargin();
+}
+
 bool FaceVertices::overFace(const btCollisionObjectWrapper* boxWrap, const Face& face, const NearCorner& corner) {
-  const btVector3 half = static_cast<const btBoxShape*>(boxWrap->getCollisionShape())->getHalfExtentsWithMargin();
+  const btVector3 half = halfExtents(*boxWrap->getCollisionShape());
   const btVector3 local = boxWrap->getWorldTransform().invXform(corner.point);
+  if (face.round) {
+    // A cylinder's end: a disc of its radius (the extent across its axis).
+    const int j = (face.axis + 1) % 3, k = (face.axis + 2) % 3;
+    return std::hypot(local[j], local[k]) <= half[j] + kOverEdge;
+  }
   for (int j = 0; j < 3; ++j) {
     if (j != face.axis && std::abs(local[j]) > half[j] + kOverEdge) return false;
   }

@@ -10,14 +10,15 @@
 namespace tabletop {
 
 /// A box, a cylinder or a convex hull (a cone) against a box (the table's
-/// top, a cube, a box): while the solid rests on one of the box's faces, that is
-/// on the face's plane with every corner near it over the face, its
-/// corners there are the contact points, chosen as on the floor
-/// (PlaneVertices, CornerChoice), so a cylinder or a cone slides on the
-/// table as it does on the floor. Otherwise (the solid reaches over the
-/// face's edge, or meets the box at an edge or a corner) Bullet's
-/// algorithm for the pair finds the points, and a cylinder's or a cone's
-/// corners that are over the face are added beside them.
+/// top, a cube, a box) or a standing cylinder's ends: while the solid rests
+/// on one of the faces (a box's six, a cylinder's two discs), that is on the
+/// face's plane with every corner near it over the face, its corners there
+/// are the contact points, chosen as on the floor (PlaneVertices,
+/// CornerChoice), so a cylinder or a cone slides on the table as it does
+/// on the floor. Otherwise (the solid reaches over the face's edge, or
+/// meets the body at an edge or a corner) Bullet's algorithm for the pair
+/// finds the points, and a solid's corners that are over the face are
+/// added beside them.
 ///
 /// Bullet's algorithms found a standing cylinder's face on the table by
 /// GJK at three small turns, and a cone's by clipping its 32-sided base,
@@ -38,8 +39,8 @@ class FaceVertices : public btActivatingCollisionAlgorithm {
   }
   void getAllContactManifolds(btManifoldArray& manifolds) override;
 
-  /// Registered with a dispatcher for cylinder and hull against a box;
-  /// `otherwise` makes Bullet's algorithm for the pair.
+  /// Registered with a dispatcher for box, cylinder and hull against a box
+  /// or a cylinder; `otherwise` makes Bullet's algorithm for the pair.
   struct CreateFunc : public btCollisionAlgorithmCreateFunc {
     explicit CreateFunc(btCollisionAlgorithmCreateFunc* pairs) : otherwise(pairs) {}
     btCollisionAlgorithm* CreateCollisionAlgorithm(btCollisionAlgorithmConstructionInfo& info,
@@ -60,7 +61,13 @@ class FaceVertices : public btActivatingCollisionAlgorithm {
     btVector3 normal;
     int axis = 0;
     bool out = false;
+    bool round = false;  // a cylinder's end, a disc
   };
+  // Whether a shape has faces a solid can rest on: a box, or a cylinder
+  // (its two ends).
+  static bool hasFaces(const btCollisionShape& shape);
+  // A box's or a cylinder's half extents, its margin included.
+  static btVector3 halfExtents(const btCollisionShape& faced);
   Face outerFace(const btCollisionObjectWrapper* boxWrap, const btCollisionObjectWrapper* solidWrap,
                  btScalar timeStep);
   static bool overFace(const btCollisionObjectWrapper* boxWrap, const Face& face, const NearCorner& corner);

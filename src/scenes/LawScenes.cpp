@@ -13,8 +13,17 @@ namespace {
 // The slab on the floor, as a scene's first entity.
 constexpr const char* kSlab = R"({"name": "Base", "shape": "box", "size": [1.6, 0.1, 1.6], "position": [3, 0],
   "on": "ground", "mass": 100, "material": {"friction": 1, "restitution": 1}}, )";
-constexpr double kSlabTop = 0.1;   // m
+// The drum, a 100 kg cylinder standing on the floor there: a support whose
+// top is a disc.
+constexpr const char* kDrum = R"({"name": "Base", "shape": "cylinder", "size": [0.8, 0.8, 0.1], "position": [3, 0],
+  "on": "ground", "mass": 100, "material": {"friction": 1, "restitution": 1}}, )";
+constexpr double kSlabTop = 0.1;   // m, the slab's and the drum's
 constexpr double kTableTop = 0.75;  // m, the default table's
+
+// The entity a support needs in the scene, first, or nothing.
+const char* baseOf(const std::string& support) {
+  return support == "slab" ? kSlab : support == "drum" ? kDrum : "";
+}
 
 }  // namespace
 
@@ -25,15 +34,15 @@ std::pair<double, double> pushStart(const PushCase& c) {
 
 Scenario pushScene(const PushCase& c) {
   const auto [x0, z0] = pushStart(c);
-  const bool slab = c.support == "slab";
+  const bool base = c.support == "slab" || c.support == "drum";
   std::ostringstream text;
   text.precision(17);
   text << R"({"version": 1, "name": "push", "table": {"size": [2.0, 2.0], "material": {"friction": 1}},
     "ground": {"material": {"friction": 1}}, "settings": {"timestep": )"
        << 1.0 / c.rate << R"(, "duration": 3}, "entities": [)";
-  if (slab) text << kSlab;
+  text << baseOf(c.support);
   text << R"({"name": "A", "shape": ")" << c.shape << R"(", "size": )" << c.size << R"(, "position": [)" << x0
-       << ", " << z0 << R"(], "on": ")" << (slab ? "Base" : c.support) << R"(", "mass": )" << kPushedMass
+       << ", " << z0 << R"(], "on": ")" << (base ? "Base" : c.support) << R"(", "mass": )" << kPushedMass
        << R"(, "material": {"friction": )" << c.friction << R"(, "rolling_friction": )" << c.rollingFriction
        << R"(}}], "script": [{"push": {"entity": "A", "angle": )" << c.angle << ", ";
   if (c.step > 0) {
@@ -75,7 +84,7 @@ std::string describe(const PushCase& c) {
 }
 
 double dropTouchHeight(const DropCase& c) {
-  const double top = c.support == "table" ? kTableTop : c.support == "slab" ? kSlabTop : 0.0;
+  const double top = c.support == "table" ? kTableTop : c.support == "ground" ? 0.0 : kSlabTop;
   return top + c.below;
 }
 
@@ -97,7 +106,7 @@ Scenario dropScene(const DropCase& c) {
   text << R"({"version": 1, "name": "drop", "ground": {"material": {"restitution": 1}},
     "table": {"material": {"restitution": 1}}, "settings": {"timestep": )"
        << 1.0 / c.rate << R"(, "duration": 1.2, "end_at_rest": false}, "entities": [)";
-  if (c.support == "slab") text << kSlab;
+  text << baseOf(c.support);
   text << R"({"name": "A", "shape": ")" << c.shape << R"(", "size": )" << c.size << R"(, "position": [)"
        << (c.support == "table" ? 0.0 : 3.0) << ", " << dropTouchHeight(c) + kDropHeight
        << R"(, 0.0], "mass": 1.0, "material": {"restitution": )" << c.restitution << "}}]}";

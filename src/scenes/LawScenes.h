@@ -9,20 +9,22 @@ namespace tabletop {
 
 /// The scenes of the laws every shape on every support must follow
 /// (tests/sim/SlideTest and RestitutionTest, bench --laws). The supports:
-/// "table", "ground" and "slab", a 100 kg box 1.6 x 0.1 x 1.6 m resting on
-/// the floor 3 m from the table's centre (floor friction 1).
+/// "table", "ground", "slab", a 100 kg box 1.6 x 0.1 x 1.6 m resting on
+/// the floor 3 m from the table's centre (floor friction 1), and "drum", a
+/// 100 kg cylinder 0.8 m in radius and 0.1 m high standing there.
+inline constexpr const char* kLawSupports[] = {"table", "ground", "slab", "drum"};
 
 /// One entity pushed across a support, the scene of the sliding, rolling
 /// and step laws: 1.5 kg, pushed at a
 /// world angle from the table's centre (0.3 m back from it), or 3 m from
-/// it on the floor or on a 100 kg slab resting there, towards open space.
-/// The slab (1.6 x 0.1 x 1.6 m, floor friction 1) is held by the floor
-/// against the slider's friction: it does not move. Table and floor
+/// it on the floor, or on the slab or the drum resting there, towards open
+/// space. The floor (friction 1) holds either against the slider's
+/// friction: it does not move. Table and floor
 /// friction are 1, so the entity's own coefficients are the contact's.
 struct PushCase {
   std::string shape;    ///< scenario "shape"
   std::string size;     ///< scenario "size", as JSON
-  std::string support;  ///< "table", "ground" or "slab"
+  std::string support;  ///< one of kLawSupports
   double angle = 0;     ///< degrees, the push's world angle
   double rate = 60;     ///< Hz
   double friction = 0.25;
@@ -67,13 +69,13 @@ std::string describe(const RideCase& c);
 
 /// One 1 kg entity dropped from kDropHeight above its support, upright,
 /// the scene of the bouncing law: on the table at its centre, on the floor
-/// 3 m from it, or on the slab there. Every support's restitution is 1, so
+/// 3 m from it, or on the slab or the drum there. Every support's restitution is 1, so
 /// the entity's own is the contact's.
 struct DropCase {
   std::string shape;       ///< scenario "shape"
   std::string size;        ///< scenario "size", as JSON
   double below = 0;        ///< m, its centre of mass above its lowest point
-  std::string support;     ///< "table", "ground" or "slab"
+  std::string support;     ///< one of kLawSupports
   double restitution = 0;
   double rate = 60;        ///< Hz
 };

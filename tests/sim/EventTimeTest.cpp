@@ -63,7 +63,7 @@ TEST(EventTime, ALandingIsPlacedInsideTheStep) {
   struct Shape { const char* shape; const char* size; double below; };
   for (const Shape& shape : {Shape{"cube", "0.1", 0.05}, Shape{"sphere", "0.05", 0.05},
                              Shape{"cylinder", "[0.05, 0.05, 0.1]", 0.05}, Shape{"box", "[0.2, 0.05, 0.12]", 0.025}}) {
-    for (const char* support : {"table", "ground", "slab"}) {
+    for (const char* support : kLawSupports) {
       for (const double rate : {30.0, 60.0, 240.0, 1000.0}) {
         const DropCase c{shape.shape, shape.size, shape.below, support, 0.0, rate};
         const Scenario s = dropScene(c);

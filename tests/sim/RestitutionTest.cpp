@@ -72,7 +72,7 @@ std::vector<DropCase> cases() {
                 {"cylinder", "[0.05, 0.03, 0.1]", frustumCentroid(0.05, 0.03, 0.1)}};
   std::vector<DropCase> all;
   for (const auto& shape : shapes) {
-    for (const char* support : {"ground", "table", "slab"}) {
+    for (const char* support : kLawSupports) {
       for (double e : {0.0, 0.5, 0.9}) {
         for (double rate : {30.0, 60.0, 240.0, 1000.0, 10000.0}) {
           all.push_back({shape.shape, shape.size, shape.below, support, e, rate});

@@ -55,7 +55,7 @@ TEST(Slide, TravelsTheClosedFormDistanceWithoutTurning) {
   const double mu = 0.25, impulse = 2.4;  // v0 = 1.6 m/s: d = 0.522 m
   const double v0 = impulse / kPushedMass, expected = v0 * v0 / (2.0 * mu * kG);
   for (const Shape& shape : kShapes) {
-    for (const char* support : {"table", "ground", "slab"}) {
+    for (const char* support : kLawSupports) {
       for (double angle : {0.0, 30.0, 45.0, 77.0, 90.0}) {
         for (double rate : {30.0, 60.0, 240.0, 1000.0}) {
           PushCase c{shape.shape, shape.size, support, angle, rate, mu};
@@ -80,7 +80,7 @@ TEST(Slide, TravelsTheClosedFormDistanceWithoutTurning) {
 // 0.7 degree turned (docs/bullet-corrections.md, "Left").
 TEST(Slide, TravelsTheClosedFormAtAnyFrictionAndSpeed) {
   for (const Shape& shape : kShapes) {
-    for (const char* support : {"table", "ground", "slab"}) {
+    for (const char* support : kLawSupports) {
       for (const double mu : {0.1, 0.5, 0.8}) {
         // Fast enough to slide 0.5 m, and slow.
         for (const double v0 : {0.4, std::sqrt(2.0 * mu * kG * 0.5)}) {
@@ -117,7 +117,7 @@ TEST(Slide, ASphereSlipsThenRollsTheClosedFormDistance) {
         const double t1 = 2.0 * v0 / (kG * (7.0 * mu - 5.0 * rho));
         const double v1 = 5.0 * v0 * (mu - rho) / (7.0 * mu - 5.0 * rho);
         const double expected = (v0 + v1) * t1 / 2.0 + v1 * v1 / (2.0 * 5.0 * kG * rho / 7.0);
-        for (const char* support : {"table", "ground", "slab"}) {
+        for (const char* support : kLawSupports) {
           for (double angle : {0.0, 77.0}) {
             for (double rate : {30.0, 60.0, 240.0, 1000.0}) {
               PushCase c{shape.shape, shape.size, support, angle, rate, mu, rf};
@@ -143,7 +143,7 @@ TEST(Slide, AStepPushTravelsItsStep) {
   shapes.push_back({"sphere", "0.1"});
   for (const Shape& shape : shapes) {
     const bool sphere = std::string(shape.shape) == "sphere";
-    for (const char* support : {"table", "ground", "slab"}) {
+    for (const char* support : kLawSupports) {
       for (double angle : {0.0, 45.0, 77.0, 200.0}) {
         for (double rate : {30.0, 60.0, 240.0, 1000.0}) {
           PushCase c{shape.shape, shape.size, support, angle, rate, mu, sphere ? 0.002 : 0.0};
