@@ -36,7 +36,8 @@ class ContactDispatcher : public btCollisionDispatcher {
   // Bullet's convex-convex algorithm with multipoint perturbation.
   std::unique_ptr<btConvexConvexAlgorithm::CreateFunc> multipoint_;
   PlaneVertices::CreateFunc planeVertices_;
-  std::unique_ptr<FaceVertices::CreateFunc> cylinderOnBox_, hullOnBox_, boxOnBox_, cylinderOnCylinder_, hullOnCylinder_;
+  std::unique_ptr<FaceVertices::CreateFunc> cylinderOnBox_, hullOnBox_, boxOnBox_, cylinderOnCylinder_, hullOnCylinder_,
+      hullOnHull_;
   // The points each pair's ContactResult finds, one storage for all.
   ContactResult::FoundPoints found_;
 

@@ -1,5 +1,6 @@
 #include "physics/FaceVertices.h"
 
+#include <algorithm>
 #include <cmath>
 #include <new>
 #include <utility>
@@ -42,15 +43,15 @@ void FaceVertices::clearOtherwise() {
 void FaceVertices::processCollision(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
                                     const btDispatcherInfo& info, btManifoldResult* result) {
   // Two bodies with faces: the first whose face the other rests on, a
-  // box's before a cylinder's, else the first body's, so the roles stay put
-  // from step to step.
-  const bool box0 = isBox(*body0->getCollisionShape());
-  const bool box1 = isBox(*body1->getCollisionShape());
-  const bool firstFaced = box0 || (!box1 && hasFaces(*body0->getCollisionShape()));
+  // box's before a cylinder's before a cone's, else the first body's, so
+  // the roles stay put from step to step.
+  const int rank0 = faceRank(*body0->getCollisionShape());
+  const int rank1 = faceRank(*body1->getCollisionShape());
+  const bool firstFaced = rank0 >= rank1;
   const btCollisionObjectWrapper* faced = firstFaced ? body0 : body1;
   const btCollisionObjectWrapper* other = firstFaced ? body1 : body0;
   if (touchFace(faced, other, firstFaced, info.m_timeStep, result) ||
-      (hasFaces(*other->getCollisionShape()) && touchFace(other, faced, !firstFaced, info.m_timeStep, result))) {
+      (std::min(rank0, rank1) > 0 && touchFace(other, faced, !firstFaced, info.m_timeStep, result))) {
     clearOtherwise();
     return;
   }
@@ -61,7 +62,7 @@ void FaceVertices::processCollision(const btCollisionObjectWrapper* body0, const
     otherwise_ = otherwiseFunc_.CreateCollisionAlgorithm(construction, body0, body1);
   }
   otherwise_->processCollision(body0, body1, info, result);
-  if (box0 && box1) {
+  if (rank0 == kBoxRank && rank1 == kBoxRank) {
     clipApart(body0, body1, result);
   } else if (addCornersOverFace(faced, other, firstFaced, info.m_timeStep, result)) {
     return;
@@ -93,38 +94,42 @@ void FaceVertices::clipApart(const btCollisionObjectWrapper* body0, const btColl
   result->refreshContactPoints();
 }
 
-bool FaceVertices::hasFaces(const btCollisionShape& shape) {
-  return isBox(shape) || shape.getShapeType() == CYLINDER_SHAPE_PROXYTYPE;
+int FaceVertices::faceRank(const btCollisionShape& shape) {
+  switch (shape.getShapeType()) {
+    case BOX_SHAPE_PROXYTYPE: return kBoxRank;
+    case CYLINDER_SHAPE_PROXYTYPE: return 2;
+    case CONVEX_HULL_SHAPE_PROXYTYPE: return 1;
+    default: return 0;
+  }
 }
 
 FaceVertices::Face FaceVertices::outerFace(const btCollisionObjectWrapper* boxWrap,
                                            const btCollisionObjectWrapper* solidWrap, btScalar timeStep) {
   near_.clear();
-  const btCollisionShape& faced = *boxWrap->getCollisionShape();
   const auto* solid = static_cast<const btConvexShape*>(solidWrap->getCollisionShape());
   const btTransform& boxPose = boxWrap->getWorldTransform();
   const btTransform& solidPose = solidWrap->getWorldTransform();
-  const btVector3 half = halfExtents(faced);
-  // A box's six faces; a cylinder's two ends, across its axis.
-  const bool cylinder = !isBox(faced);
-  const int first = cylinder ? static_cast<const btCylinderShape&>(faced).getUpAxis() : 0;
-  const int last = cylinder ? first : 2;
+  const FacedShape shape = facesOf(*boxWrap->getCollisionShape());
+  Face face;
+  if (shape.first > shape.last) return face;  // none
 
   // The face the solid lies farthest out from, along its normal: where it
   // rests if it rests on the body.
-  Face face;
-  btScalar side = 1, separation = -BT_LARGE_FLOAT;
-  for (int i = first; i <= last; ++i) {
-    for (const btScalar s : {btScalar(1), btScalar(-1)}) {
-      const btVector3 n = boxPose.getBasis().getColumn(i) * s;
+  int end = 0;
+  btScalar separation = -BT_LARGE_FLOAT;
+  for (int i = shape.first; i <= shape.last; ++i) {
+    for (int e = 0; e < 2; ++e) {
+      const btVector3 n = boxPose.getBasis().getColumn(i) * (e == 0 ? 1 : -1);
       const btVector3 lowest = solidPose * solid->localGetSupportingVertex(solidPose.getBasis().transpose() * -n);
-      const btScalar apart = n.dot(lowest - boxPose.getOrigin()) - half[i];
-      if (apart > separation) separation = apart, face.axis = i, side = s;
+      const btScalar apart = n.dot(lowest - boxPose.getOrigin()) - shape.out(i, e);
+      if (apart > separation) separation = apart, face.axis = i, end = e;
     }
   }
-  face.normal = boxPose.getBasis().getColumn(face.axis) * side;
-  face.round = cylinder;
-  const btScalar offset = face.normal.dot(boxPose.getOrigin()) + half[face.axis];
+  face.normal = boxPose.getBasis().getColumn(face.axis) * (end == 0 ? 1 : -1);
+  face.round = shape.round;
+  face.half = shape.half;
+  face.radius = shape.radius[end];
+  const btScalar offset = face.normal.dot(boxPose.getOrigin()) + shape.out(face.axis, end);
   if (face.normal.dot(solidPose.getOrigin()) <= offset) return face;  // its centre is not out over the face
   nearCorners(*solid, solidPose, face.normal, offset, manifold_->getContactBreakingThreshold(),
               {solidWrap->getCollisionObject(), boxWrap->getCollisionObject(), timeStep}, corners_, near_);
@@ -132,21 +137,60 @@ FaceVertices::Face FaceVertices::outerFace(const btCollisionObjectWrapper* boxWr
   return face;
 }
 
-btVector3 FaceVertices::halfExtents(const btCollisionShape& faced) {
-  return isBox(faced) ? static_cast<const btBoxShape&>(faced).getHalfExtentsWithMargin()
-                      : static_cast<const btCylinderShape&>(faced).getHalfExtentsWithMargin();
+FaceVertices::FacedShape FaceVertices::facesOf(const btCollisionShape& shape) {
+  FacedShape faces;
+  if (isBox(shape)) {
+    faces.first = 0, faces.last = 2;
+    faces.half = static_cast<const btBoxShape&>(shape).getHalfExtentsWithMargin();
+    return faces;
+  }
+  faces.round = true;
+  if (shape.getShapeType() == CYLINDER_SHAPE_PROXYTYPE) {
+    const auto& cylinder = static_cast<const btCylinderShape&>(shape);
+    const int up = cylinder.getUpAxis();
+    faces.first = faces.last = up;
+    faces.half = cylinder.getHalfExtentsWithMargin();
+    faces.radius[0] = faces.radius[1] = faces.half[(up + 1) % 3];
+    faces.ends[0] = faces.ends[1] = faces.half[up];
+    return faces;
+  }
+  if (shape.getShapeType() != CONVEX_HULL_SHAPE_PROXYTYPE) return faces;
+  // A truncated cone (Cylinder.cpp): a hull of two regular rings about its
+  // y axis, grown by its margin. Each end is a polygon; the disc inscribed
+  // in it counts as the face. Any other hull has none.
+  const auto& hull = static_cast<const btConvexHullShape&>(shape);
+  const btVector3* points = hull.getUnscaledPoints();
+  const int n = hull.getNumPoints();
+  if (n < 6) return faces;
+  btScalar top = points[0].y(), bottom = points[0].y();
+  for (int p = 1; p < n; ++p) top = std::max(top, points[p].y()), bottom = std::min(bottom, points[p].y());
+  const btScalar m = hull.getMargin();
+  for (int e = 0; e < 2; ++e) {
+    const btScalar level = e == 0 ? top : bottom;
+    int count = 0;
+    btScalar low = BT_LARGE_FLOAT, high = 0;
+    for (int p = 0; p < n; ++p) {
+      if (std::abs(points[p].y() - level) > kRingTolerance) continue;
+      const btScalar r = std::hypot(points[p].x(), points[p].z());
+      low = std::min(low, r), high = std::max(high, r), ++count;
+    }
+    if (count < 3 || high - low > kRingTolerance) return faces;
+    faces.radius[e] = high * std::cos(SIMD_PI / count) + m;
+  }
+  faces.first = faces.last = 1;
+  faces.ends[0] = top + m;
+  faces.ends[1] = m - bottom;
+  return faces;
 }
 
 bool FaceVertices::overFace(const btCollisionObjectWrapper* boxWrap, const Face& face, const NearCorner& corner) {
-  const btVector3 half = halfExtents(*boxWrap->getCollisionShape());
   const btVector3 local = boxWrap->getWorldTransform().invXform(corner.point);
   if (face.round) {
-    // A cylinder's end: a disc of its radius (the extent across its axis).
     const int j = (face.axis + 1) % 3, k = (face.axis + 2) % 3;
-    return std::hypot(local[j], local[k]) <= half[j] + kOverEdge;
+    return std::hypot(local[j], local[k]) <= face.radius + kOverEdge;
   }
   for (int j = 0; j < 3; ++j) {
-    if (j != face.axis && std::abs(local[j]) > half[j] + kOverEdge) return false;
+    if (j != face.axis && std::abs(local[j]) > face.half[j] + kOverEdge) return false;
   }
   return true;
 }

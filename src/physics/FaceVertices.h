@@ -61,13 +61,30 @@ class FaceVertices : public btActivatingCollisionAlgorithm {
     btVector3 normal;
     int axis = 0;
     bool out = false;
-    bool round = false;  // a cylinder's end, a disc
+    bool round = false;    // a disc (a cylinder's or a cone's end), not a box's rectangle
+    btVector3 half;        // a box's half extents, margin included
+    btScalar radius = 0;   // a disc's
   };
-  // Whether a shape has faces a solid can rest on: a box, or a cylinder
-  // (its two ends).
-  static bool hasFaces(const btCollisionShape& shape);
-  // A box's or a cylinder's half extents, its margin included.
-  static btVector3 halfExtents(const btCollisionShape& faced);
+  // The faces a shape has: a box's six, a standing cylinder's two ends,
+  // and a truncated cone's two ends (the discs inscribed in its hull's
+  // rings), across its own axes `first` to `last` (none if first > last).
+  struct FacedShape {
+    int first = 0, last = -1;
+    bool round = false;
+    btVector3 half{0, 0, 0};
+    btScalar radius[2] = {0, 0};  // each end's disc: along +axis, then -axis
+    btScalar ends[2] = {0, 0};    // a disc's distance from the centre, likewise
+    // How far the face on `axis` at `end` lies from the centre, m.
+    btScalar out(int axis, int end) const { return round ? ends[end] : half[axis]; }
+  };
+  static FacedShape facesOf(const btCollisionShape& shape);
+  // Which of two bodies' faces are tried first: a box's (kBoxRank), then a
+  // cylinder's, then a cone's; 0 for a shape with none.
+  static constexpr int kBoxRank = 3;
+  static int faceRank(const btCollisionShape& shape);
+  // How far a hull's ring points may lie from their ring's level and
+  // radius, m.
+  static constexpr btScalar kRingTolerance = 1e-9;
   Face outerFace(const btCollisionObjectWrapper* boxWrap, const btCollisionObjectWrapper* solidWrap,
                  btScalar timeStep);
   static bool overFace(const btCollisionObjectWrapper* boxWrap, const Face& face, const NearCorner& corner);

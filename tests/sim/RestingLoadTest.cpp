@@ -116,6 +116,46 @@ TEST(RestingLoad, TowersOfEqualCylindersStandAtTheirStaticHeights) {
   }
 }
 
+// Every shape standing on every flat top on the table: a cube, a box, a
+// standing cylinder, a flat one and a truncated cone, each under a small
+// cube, cylinder and cone. Each top stays where it was put, within 1 um
+// over 2 s at 30 to 240 Hz. On Bullet's points (GJK, clipping) a cube on a
+// cone's top stood 0.4 mm aside at 60 Hz, a cylinder on a smaller cube 88
+// um, a cone on a cylinder 22 um, each tipping at its first step.
+TEST(RestingLoad, EveryShapeStandsOnEveryFlatTop) {
+  struct Piece { const char* shape; const char* size; };
+  const Piece bases[] = {{"cube", "0.1"},
+                         {"box", "[0.2, 0.05, 0.12]"},
+                         {"cylinder", "[0.05, 0.05, 0.06]"},
+                         {"cylinder", "[0.08, 0.08, 0.02]"},
+                         {"cylinder", "[0.06, 0.04, 0.06]"}};
+  const Piece tops[] = {{"cube", "0.05"}, {"cylinder", "[0.03, 0.03, 0.05]"}, {"cylinder", "[0.035, 0.02, 0.05]"}};
+  for (const Piece& base : bases) {
+    for (const Piece& top : tops) {
+      for (double rate : {30.0, 60.0, 240.0}) {
+        std::ostringstream text, what;
+        text << R"({"version": 1, "name": "pair", "settings": {"timestep": )" << 1.0 / rate
+             << R"(, "duration": 2, "end_at_rest": false}, "entities": [)"
+             << R"({"name": "A", "shape": ")" << base.shape << R"(", "size": )" << base.size
+             << R"(, "position": [0.1, 0], "on": "table", "mass": 0.5},)"
+             << R"({"name": "B", "shape": ")" << top.shape << R"(", "size": )" << top.size
+             << R"(, "position": [0.1, 0], "on": "A", "mass": 0.3}]})";
+        what << top.shape << " " << top.size << " on " << base.shape << " " << base.size << ", " << rate << " Hz";
+        const Scenario s = ScenarioLoader::loadText(text.str(), "pair.json");
+        auto sim = buildSimulation(s, s.settings, SimulationMode::Bullet);
+        const Vec3 start = sim->snapshot().back().position;
+        double worst = 0.0;
+        const RunResult r = runScript(s, s.settings, *sim, [&](const Simulation& now) {
+          const Vec3& p = now.snapshot().back().position;
+          worst = std::max(worst, std::hypot(p.x - start.x, p.y - start.y, p.z - start.z));
+        });
+        EXPECT_TRUE(r.complete) << what.str() << ": " << r.failure;
+        EXPECT_LE(worst, 1e-6) << what.str();
+      }
+    }
+  }
+}
+
 // A 1000 times heavier cube on a light one and the other way round: with
 // one friction row a point (Bullet's default) the light base crept across
 // its one frictionless axis, 11.5 mm in 10 s at 60 Hz.
