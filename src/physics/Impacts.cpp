@@ -158,12 +158,15 @@ double ImpactScan::earliestImpact(double horizon, double impactSpeed) const {
 namespace {
 
 // The convex pieces of a body's shape in the world: itself, or a
-// compound's children (the table's top and legs).
+// compound's children (the table's top and legs); a plane (the floor) as
+// one piece with no shape, which closestOf takes as the plane.
 std::vector<std::pair<const btConvexShape*, btTransform>> convexPieces(const btCollisionObject& object) {
   std::vector<std::pair<const btConvexShape*, btTransform>> pieces;
   const btCollisionShape* shape = object.getCollisionShape();
   if (shape->isConvex()) {
     pieces.emplace_back(static_cast<const btConvexShape*>(shape), object.getWorldTransform());
+  } else if (shape->getShapeType() == STATIC_PLANE_PROXYTYPE) {
+    pieces.emplace_back(nullptr, object.getWorldTransform());  // closestOf takes it as a plane
   } else if (shape->isCompound()) {
     const auto* compound = static_cast<const btCompoundShape*>(shape);
     for (int c = 0; c < compound->getNumChildShapes(); ++c) {
@@ -173,6 +176,37 @@ std::vector<std::pair<const btConvexShape*, btTransform>> convexPieces(const btC
     }
   }
   return pieces;
+}
+
+// The closest points of a convex piece and a plane (the floor), as
+// closestPoints gives them for two pieces with the plane as B: its normal,
+// the piece's point deepest along it, and that point's foot on the plane.
+btPointCollector closestToPlane(const btConvexShape& shape, const btTransform& place, const btCollisionObject& plane) {
+  const auto& planeShape = static_cast<const btStaticPlaneShape&>(*plane.getCollisionShape());
+  const btTransform& planePlace = plane.getWorldTransform();
+  const btVector3 normal = planePlace.getBasis() * planeShape.getPlaneNormal();
+  const btScalar level = planeShape.getPlaneConstant() + normal.dot(planePlace.getOrigin());
+  const btVector3 deepest = place * shape.localGetSupportingVertex(place.getBasis().transpose() * -normal);
+  const btScalar distance = normal.dot(deepest) - level;
+  btPointCollector closest;
+  closest.addContactPoint(normal, deepest - normal * distance, distance);
+  return closest;
+}
+
+// The closest points of a piece of A and a piece of B, either of which
+// may be a plane (given as a null shape with its object), as
+// closestPoints gives them: the normal on B, from B towards A.
+btPointCollector closestOf(const btConvexShape* shapeA, const btTransform& placeA, const btCollisionObject& a,
+                           const btConvexShape* shapeB, const btTransform& placeB, const btCollisionObject& b) {
+  if (shapeB == nullptr) return closestToPlane(*shapeA, placeA, b);
+  if (shapeA != nullptr) return closestPoints(*shapeA, placeA, *shapeB, placeB);
+  // A is the plane: B's deepest point is on B, the normal from B to A.
+  const btPointCollector fromPlane = closestToPlane(*shapeB, placeB, a);
+  btPointCollector closest;
+  closest.addContactPoint(-fromPlane.m_normalOnBInWorld,
+                          fromPlane.m_pointInWorld + fromPlane.m_normalOnBInWorld * fromPlane.m_distance,
+                          fromPlane.m_distance);
+  return closest;
 }
 
 // The fastest any point of `object` moves, m/s: its centre's speed and its
@@ -221,8 +255,9 @@ double ImpactScan::earliestSeparatedImpact(btOverlappingPairCache& pairs, double
     const double reach = (fastest + 0.5 * fastestAccel * horizon) * horizon + kTouching;
     for (const auto& [shapeA, placeA] : convexPieces(a)) {
       for (const auto& [shapeB, placeB] : convexPieces(b)) {
-        if (boxGap(*shapeA, placeA, *shapeB, placeB) > reach) continue;
-        const btPointCollector closest = closestPoints(*shapeA, placeA, *shapeB, placeB);
+        if (shapeA != nullptr && shapeB != nullptr && boxGap(*shapeA, placeA, *shapeB, placeB) > reach) continue;
+        if (shapeA == nullptr && shapeB == nullptr) continue;
+        const btPointCollector closest = closestOf(shapeA, placeA, a, shapeB, placeB, b);
         if (!closest.m_hasResult || closest.m_distance <= kTouching) continue;
         // A point of manifold form: the normal on B, from B towards A.
         const btVector3 onB = closest.m_pointInWorld;
