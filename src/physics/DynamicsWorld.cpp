@@ -103,10 +103,12 @@ void DynamicsWorld::scaleCarriedImpulses(double ratio) {
 // takes whatever is left whole.
 void DynamicsWorld::step(double dt) {
   stepLength_ = dt;
+  struck_.clear();
   double left = dt;
   for (int part = 0; left > 0; ++part) {
     if (lastStep_ > 0) scaleCarriedImpulses(left / lastStep_);
     partLength_ = left;
+    partOffset_ = dt - left;
     mayCut_ = part + 1 < kMaxParts && smoothAcceleration_ > 0;
     // maxSubSteps = 0: exactly one step of the given length.
     stepSimulation(left, 0);

@@ -65,6 +65,18 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   /// part before.
   void step(double dt);
 
+  /// A pair that struck inside the last step: `at` s after the step's
+  /// start, a struck point's normal on B (from B towards A).
+  struct Struck {
+    const btCollisionObject* a;
+    const btCollisionObject* b;
+    btVector3 normalOnB;
+    double at;
+  };
+  /// The pairs that bounced inside the last step, in time order: they may
+  /// be apart again by its end, where the manifolds no longer show it.
+  const std::vector<Struck>& struck() const { return struck_; }
+
   /// Bullet's narrow phase, with the impulses of points a compound dropped
   /// carried over (CarriedImpulses).
   void performDiscreteCollisionDetection() override;
@@ -85,6 +97,8 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   bool markImpacts(double timeStep);
   void forgetImpacts();
   void resolveTouchingImpacts(btContactSolverInfo& solverInfo);
+  // Records the pairs the impact solve just bounced (struck()).
+  void noteStruck();
   void scaleCarriedImpulses(double ratio);
   // Ends the part at `length` s instead: scales the impulses it carries
   // and gives back the rolling resistance of the time it lost.
@@ -127,6 +141,8 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   double lastStep_ = 0.0;    // the length of the part before, s (0: none yet)
   double stepLength_ = 0.0;  // the step being taken, s
   double partLength_ = 0.0;  // the part of it being taken, s
+  double partOffset_ = 0.0;  // how far into the step the part starts, s
+  std::vector<Struck> struck_;
   bool mayCut_ = false;      // the part may end at an impact
   bool solved_ = false;      // a solve has run: contacts carry their loads
   std::vector<std::pair<btManifoldPoint*, btScalar>> heldGaps_;

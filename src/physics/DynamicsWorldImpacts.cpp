@@ -173,6 +173,7 @@ void DynamicsWorld::resolveTouchingImpacts(btContactSolverInfo& solverInfo) {
     blendWithinEnergy(m_nonStaticRigidBodies, elastic, energyBefore);
   }
   for (const auto& [point, gap] : gaps) point->setDistance(gap);
+  noteStruck();
 
   for (const Saved& s : saved) {
     s.body->applyCentralForce(s.force);
@@ -195,6 +196,22 @@ void DynamicsWorld::resolveTouchingImpacts(btContactSolverInfo& solverInfo) {
   }
   // The second-order update reads the part's smooth change from here.
   if (smoothAcceleration_ > 0) saveStartVelocities();
+}
+
+// Each pair with a bounced point, once, with that point's normal, at the
+// part's start. (The impact solve does not warm-start, so Bullet leaves
+// its impulses out of the points.)
+void DynamicsWorld::noteStruck() {
+  btDispatcher* dispatcher = getDispatcher();
+  for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
+    const btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
+    for (int p = 0; p < manifold->getNumContacts(); ++p) {
+      const btManifoldPoint& point = manifold->getContactPoint(p);
+      if (std::find(bounced_.begin(), bounced_.end(), &point) == bounced_.end()) continue;
+      struck_.push_back({manifold->getBody0(), manifold->getBody1(), point.m_normalWorldOnB, partOffset_});
+      break;
+    }
+  }
 }
 
 // Marks the points whose bodies close along the normal faster than smooth

@@ -352,7 +352,14 @@ void World::step() {
     const int loaded = static_cast<int>(std::ceil(settings_.timestep / IslandSolver::kLongSweepStep - 1e-9));
     n = std::min(std::max(n, loaded), settings_.maxSubsteps);
   }
-  for (int k = 0; k < n; ++k) world_->step(settings_.timestep / n);
+  struck_.clear();
+  for (int k = 0; k < n; ++k) {
+    world_->step(settings_.timestep / n);
+    for (DynamicsWorld::Struck pair : world_->struck()) {
+      pair.at += k * settings_.timestep / n;
+      struck_.push_back(pair);
+    }
+  }
   ++steps_;
   time_ = static_cast<double>(steps_) * settings_.timestep;
   observe(true);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <unordered_map>
@@ -127,6 +128,9 @@ class World : public Simulation {
   /// its start (tracker) reached the height at which it rests flat on
   /// `support` (a user index): a landing's own time, not the step's end.
   double landingTime(const Tracker& tracker, const Shape& shape, int support) const;
+  /// When, in the step just taken, entities `entity` and `other` (user
+  /// indices) first struck each other; none if they did not.
+  std::optional<double> firstStruck(int entity, int other) const;
   void record(const Event& e);
   Support participant(const btCollisionObject* object) const;
   Support participant(int userIndex) const;
@@ -138,6 +142,9 @@ class World : public Simulation {
     double distance;  // closest point, m (negative: penetration)
     double support;   // upward normal impulse, N*s; -1 if it does not hold the entity up
   };
+  // The pairs that struck inside the step (DynamicsWorld::struck), their
+  // times from the step's start, over all its parts.
+  std::vector<DynamicsWorld::Struck> struck_;
 
   Settings settings_;
   Pipeline pipeline_;

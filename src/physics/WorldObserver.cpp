@@ -56,6 +56,18 @@ double World::landingTime(const Tracker& tracker, const Shape& shape, int suppor
   return start + std::clamp((vy0 + std::sqrt(disc)) / g, 0.0, dt);
 }
 
+std::optional<double> World::firstStruck(int entity, int other) const {
+  std::optional<double> first;
+  for (const DynamicsWorld::Struck& pair : struck_) {
+    const int a = pair.a->getUserIndex(), b = pair.b->getUserIndex();
+    if ((a == entity && b == other) || (a == other && b == entity)) {
+      const double t = time_ - settings_.timestep + pair.at;
+      if (!first || t < *first) first = t;
+    }
+  }
+  return first;
+}
+
 void World::observe(bool emit) {
   const std::size_t n = entities_.size();
 
@@ -86,6 +98,16 @@ void World::observe(bool emit) {
       if (b >= 0) contacts_.push_back({b, a, distance, touching && -up > kSupportNormalY ? impulse : -1.0});
     }
   }
+  // A pair that struck inside the step touched then, though it may be
+  // apart by its end: a ball bouncing off the floor landed on it. It holds
+  // the entity up with no load, so it is the support only where nothing
+  // else pushes.
+  for (const DynamicsWorld::Struck& pair : struck_) {
+    const int a = pair.a->getUserIndex(), b = pair.b->getUserIndex();
+    const double up = pair.normalOnB.y();
+    if (a >= 0) contacts_.push_back({a, b, 0.0, up > kSupportNormalY ? 0.0 : -1.0});
+    if (b >= 0) contacts_.push_back({b, a, 0.0, -up > kSupportNormalY ? 0.0 : -1.0});
+  }
   std::sort(contacts_.begin(), contacts_.end(), [](const Contact& x, const Contact& y) {
     return x.entity != y.entity ? x.entity < y.entity : x.other < y.other;
   });
@@ -115,7 +137,7 @@ void World::observe(bool emit) {
       touching.push_back(pair);
       if (emit && !was) {
         Event e;
-        e.t = time_;
+        e.t = firstStruck(pair.first, pair.second).value_or(time_);
         e.type = EventType::ContactBegin;
         e.entity = entities_[pair.first]->name();
         e.other = entities_[pair.second]->name();

@@ -1,7 +1,8 @@
-// Landings and report 3.4's moment, at their own time. A body dropped
-// kDropHeight onto the floor, the table or a slab (e = 0) is reported
-// landing at t0 = sqrt(2 h / g), within 1e-4 s at every rate from 30 Hz to
-// 1 kHz. And a body sliding under friction off
+// Landings, contacts and report 3.4's moment, at their own time. A body
+// dropped kDropHeight onto the floor, the table, a slab or a drum (e = 0,
+// and bouncing at e = 0.5) is reported landing once, at t0 = sqrt(2 h / g),
+// within 1e-4 s at every rate from 30 Hz to 1 kHz; two bodies meeting
+// begin their contact at the impact. And a body sliding under friction off
 // a table edge is reported leaving the table when its centre passes the
 // edge, t = (v0 - sqrt(v0^2 - 2 a d)) / a with a = mu g, within 1e-4 s at
 // every rate from 30 Hz to 1 kHz, for each edge and a cube and a box, not
@@ -14,6 +15,7 @@
 // its support up to the edge. The crossing itself is placed as for the cube.
 
 #include <cmath>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -58,23 +60,58 @@ TEST(EventTime, LeavingTheTableIsPlacedInsideTheStep) {
   }
 }
 
+// Two balls meeting head on (or two cubes face to face) inside a step
+// begin their contact at the time of impact, gap / v, within 1e-4 s, also
+// where they are apart again by the step's end (at 30 Hz the balls' contact
+// was not reported at all).
+TEST(EventTime, AContactBeginsAtTheImpactInsideTheStep) {
+  const double gap = 0.3, v = 0.75;  // m, between the facing surfaces; m/s
+  for (const char* shape : {R"("shape": "sphere", "size": 0.05)", R"("shape": "cube", "size": 0.1)"}) {
+    for (const double rate : {30.0, 60.0, 240.0, 1000.0}) {
+      std::ostringstream text;
+      text.precision(17);
+      text << R"({"version": 1, "name": "meet", "settings": {"timestep": )" << 1.0 / rate
+           << R"(, "duration": 1.0}, "entities": [{"name": "A", )" << shape << R"(, "mass": 1.0, "position": [)"
+           << -0.05 - gap << R"(, 0.0], "on": "table", "material": {"friction": 0, "restitution": 0.8}},)"
+           << R"({"name": "B", )" << shape << R"(, "mass": 1.0, "position": [0.05, 0.0], "on": "table",)"
+           << R"( "material": {"friction": 0, "restitution": 0.8}}],)"
+           << R"( "script": [{"push": {"entity": "A", "angle": 0, "impulse": )" << v << "}}]}";
+      const Scenario s = ScenarioLoader::loadText(text.str(), "meet.json");
+      const RunResult r = test::runScene(s);
+      int begins = 0;
+      for (const Event& e : r.events) {
+        if (e.type != EventType::ContactBegin) continue;
+        if (++begins == 1) {
+          EXPECT_NEAR(e.t, gap / v, 1e-4) << shape << ", " << rate << " Hz";
+        }
+      }
+      EXPECT_EQ(begins, 1) << shape << ", " << rate << " Hz";
+    }
+  }
+}
+
 TEST(EventTime, ALandingIsPlacedInsideTheStep) {
   const double t0 = std::sqrt(2.0 * kDropHeight / kG);
   struct Shape { const char* shape; const char* size; double below; };
   for (const Shape& shape : {Shape{"cube", "0.1", 0.05}, Shape{"sphere", "0.05", 0.05},
                              Shape{"cylinder", "[0.05, 0.05, 0.1]", 0.05}, Shape{"box", "[0.2, 0.05, 0.12]", 0.025}}) {
     for (const char* support : kLawSupports) {
-      for (const double rate : {30.0, 60.0, 240.0, 1000.0}) {
-        const DropCase c{shape.shape, shape.size, shape.below, support, 0.0, rate};
-        const Scenario s = dropScene(c);
-        const RunResult r = test::runScene(s);
-        bool seen = false;
-        for (const Event& e : r.events) {
-          if (e.type != EventType::Lands || e.entity != "A" || seen) continue;
-          seen = true;
-          EXPECT_NEAR(e.t, t0, 1e-4) << describe(c);
+      for (const double e : {0.0, 0.5}) {
+        for (const double rate : {30.0, 60.0, 240.0, 1000.0}) {
+          const DropCase c{shape.shape, shape.size, shape.below, support, e, rate};
+          const Scenario s = dropScene(c);
+          const RunResult r = test::runScene(s);
+          int landings = 0;
+          for (const Event& event : r.events) {
+            if (event.type != EventType::Lands || event.entity != "A") continue;
+            if (++landings == 1) {
+              EXPECT_NEAR(event.t, t0, 1e-4) << describe(c);
+            }
+          }
+          // A bouncing body lands once: it comes down again on what it
+          // landed on.
+          EXPECT_EQ(landings, 1) << describe(c);
         }
-        EXPECT_TRUE(seen) << describe(c);
       }
     }
   }
