@@ -203,19 +203,25 @@ void IslandSolver::createMLCPFast(const btContactSolverInfo& info) {
   m_A.resize(n, n);
   double* a = m_A.getBufferPointerWritable();
   if (a == nullptr) return;
-  std::fill(a, a + static_cast<std::size_t>(n) * n, 0.0);
+  // A is symmetric: its lower triangle is summed over the bodies (a body's
+  // rows are listed in rising order, so row p's come at or below row q's),
+  // then copied above.
+  const auto at = [a, n](int row, int column) -> double& { return a[static_cast<std::size_t>(row) * n + column]; };
+  for (int i = 0; i < n; ++i) std::fill(&at(i, 0), &at(i, 0) + i + 1, 0.0);
   for (std::size_t s = 0; s < numBodies; ++s) {
     const std::vector<BodyRow>& rows = bodyRows_[s];
     for (std::size_t p = 0; p < rows.size(); ++p) {
       for (std::size_t q = 0; q <= p; ++q) {
         double v = 0;
         for (int k = 0; k < 6; ++k) v += rows[p].mj[k] * rows[q].j[k];
-        a[static_cast<std::size_t>(rows[p].row) * n + rows[q].row] += v;
-        if (q != p) a[static_cast<std::size_t>(rows[q].row) * n + rows[p].row] += v;
+        at(rows[p].row, rows[q].row) += v;
       }
     }
   }
-  for (int i = 0; i < n; ++i) a[static_cast<std::size_t>(i) * n + i] += info.m_globalCfm / info.m_timeStep;
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < i; ++j) at(j, i) = at(i, j);
+    at(i, i) += info.m_globalCfm / info.m_timeStep;
+  }
 }
 
 btScalar IslandSolver::solveGroup(btCollisionObject** bodies, int numBodies, btPersistentManifold** manifolds,
