@@ -1,7 +1,11 @@
 #include "physics/Pipeline.h"
 
+#include <algorithm>
+
 #include "physics/ContactDispatcher.h"
+#include "physics/FaceVertices.h"
 #include "physics/IslandSolver.h"
+#include "physics/PlaneVertices.h"
 
 namespace tabletop {
 namespace {
@@ -26,10 +30,20 @@ std::unique_ptr<btBroadphaseInterface> makeBroadphase(Broadphase kind, const Tab
   return std::make_unique<btDbvtBroadphase>();
 }
 
+// The configuration, its pool of collision algorithms sized for tabletop's
+// own too: Bullet sizes the pool's elements for its algorithms alone, and
+// an algorithm larger than that writes past its element into the next.
+std::unique_ptr<btDefaultCollisionConfiguration> makeConfiguration() {
+  btDefaultCollisionConstructionInfo info;
+  info.m_customCollisionAlgorithmMaxElementSize =
+      static_cast<int>(std::max(sizeof(FaceVertices), sizeof(PlaneVertices)));
+  return std::make_unique<btDefaultCollisionConfiguration>(info);
+}
+
 }  // namespace
 
 Pipeline::Pipeline(const Settings& settings, const TableSpec& table)
-    : configuration(std::make_unique<btDefaultCollisionConfiguration>()),
+    : configuration(makeConfiguration()),
       dispatcher(std::make_unique<ContactDispatcher>(configuration.get())),
       broadphase(makeBroadphase(settings.bullet.broadphase, table)),
       solver(std::make_unique<IslandSolver>(settings.solver, kDirectRowLimit, settings.gravity)),
