@@ -109,7 +109,7 @@ FaceVertices::Face FaceVertices::outerFace(const btCollisionObjectWrapper* boxWr
   const auto* solid = static_cast<const btConvexShape*>(solidWrap->getCollisionShape());
   const btTransform& boxPose = boxWrap->getWorldTransform();
   const btTransform& solidPose = solidWrap->getWorldTransform();
-  const FacedShape shape = facesOf(*boxWrap->getCollisionShape());
+  const FacedShape& shape = facesFor(*boxWrap->getCollisionShape());
   Face face;
   if (shape.first > shape.last) return face;  // none
 
@@ -135,6 +135,16 @@ FaceVertices::Face FaceVertices::outerFace(const btCollisionObjectWrapper* boxWr
               {solidWrap->getCollisionObject(), boxWrap->getCollisionObject(), timeStep}, corners_, near_);
   face.out = true;
   return face;
+}
+
+const FaceVertices::FacedShape& FaceVertices::facesFor(const btCollisionShape& shape) {
+  for (int k = 0; k < 2; ++k) {
+    if (facedShapes_[k] == &shape) return faces_[k];
+  }
+  const int k = facedShapes_[0] == nullptr ? 0 : 1;
+  facedShapes_[k] = &shape;
+  faces_[k] = facesOf(shape);
+  return faces_[k];
 }
 
 FaceVertices::FacedShape FaceVertices::facesOf(const btCollisionShape& shape) {

@@ -78,6 +78,8 @@ class FaceVertices : public btActivatingCollisionAlgorithm {
     btScalar out(int axis, int end) const { return round ? ends[end] : half[axis]; }
   };
   static FacedShape facesOf(const btCollisionShape& shape);
+  // facesOf, kept for the pair's two shapes, which do not change.
+  const FacedShape& facesFor(const btCollisionShape& shape);
   // Which of two bodies' faces are tried first: a box's (kBoxRank), then a
   // cylinder's, then a cone's; 0 for a shape with none.
   static constexpr int kBoxRank = 3;
@@ -108,6 +110,8 @@ class FaceVertices : public btActivatingCollisionAlgorithm {
   void clipApart(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
                  btManifoldResult* result);
 
+  const btCollisionShape* facedShapes_[2] = {nullptr, nullptr};
+  FacedShape faces_[2];
   btCollisionAlgorithmCreateFunc& otherwiseFunc_;
   btCollisionAlgorithm* otherwise_ = nullptr;  // made when first needed
   btPersistentManifold* manifold_ = nullptr;
