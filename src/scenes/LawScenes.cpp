@@ -17,7 +17,7 @@ constexpr const char* kSlab = R"({"name": "Base", "shape": "box", "size": [1.6, 
 // top is a disc.
 constexpr const char* kDrum = R"({"name": "Base", "shape": "cylinder", "size": [0.8, 0.8, 0.1], "position": [3, 0],
   "on": "ground", "mass": 100, "material": {"friction": 1, "restitution": 1}}, )";
-constexpr double kSlabTop = 0.1;   // m, the slab's and the drum's
+constexpr double kBaseTop = 0.1;   // m, the slab's and the drum's top
 constexpr double kTableTop = 0.75;  // m, the default table's
 
 // The entity a support needs in the scene, first, or nothing.
@@ -84,7 +84,7 @@ std::string describe(const PushCase& c) {
 }
 
 double dropTouchHeight(const DropCase& c) {
-  const double top = c.support == "table" ? kTableTop : c.support == "ground" ? 0.0 : kSlabTop;
+  const double top = c.support == "table" ? kTableTop : c.support == "ground" ? 0.0 : kBaseTop;
   return top + c.below;
 }
 

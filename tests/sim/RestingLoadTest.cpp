@@ -26,10 +26,10 @@ namespace {
 constexpr double kTableTop = 0.75;  // m, the scenario's default table height
 
 struct Tower {
-  int cubes;
+  int bodies;         // how many, stacked
   double size;        // m
-  double baseMass;    // kg, the bottom cube
-  double topMass;     // kg, every cube above it
+  double baseMass;    // kg, the bottom body
+  double topMass;     // kg, every body above it
   const char* support;  // "table" or "ground"
   double rate;        // Hz
   double radius = 0;  // m: a cylinder's, standing, `size` high; 0: cubes
@@ -49,7 +49,7 @@ std::string shapeSize(const Tower& t) {
 
 std::string describe(const Tower& t) {
   std::ostringstream s;
-  s << t.cubes << (t.radius > 0 ? " cylinders " : " cubes of ") << shapeSize(t) << " m (" << t.baseMass
+  s << t.bodies << (t.radius > 0 ? " cylinders " : " cubes of ") << shapeSize(t) << " m (" << t.baseMass
     << " kg under " << t.topMass << " kg) on the " << t.support << ", " << t.rate << " Hz";
   return s.str();
 }
@@ -62,7 +62,7 @@ double worstOffset(const Tower& t) {
   std::ostringstream text;
   text << R"({"version": 1, "name": "tower", "settings": {"timestep": )" << 1.0 / t.rate
        << R"(, "duration": 10, "end_at_rest": false}, "entities": [)";
-  for (int k = 0; k < t.cubes; ++k) {
+  for (int k = 0; k < t.bodies; ++k) {
     text << (k ? "," : "") << R"({"name": "C)" << k << R"(", "shape": ")" << (t.radius > 0 ? "cylinder" : "cube")
          << R"(", "size": )" << shapeSize(t) << R"(, "position": [)" << x << R"(, 0], "on": ")"
          << (k ? "C" + std::to_string(k - 1) : t.support)
