@@ -146,7 +146,7 @@ TEST(RestingLoad, EveryShapeStandsOnEveryFlatTop) {
         const Vec3 start = sim->snapshot().back().position;
         double worst = 0.0;
         const RunResult r = runScript(s, s.settings, *sim, [&](const Simulation& now) {
-          const Vec3& p = now.snapshot().back().position;
+          const Vec3 p = now.snapshot().back().position;
           worst = std::max(worst, std::hypot(p.x - start.x, p.y - start.y, p.z - start.z));
         });
         EXPECT_TRUE(r.complete) << what.str() << ": " << r.failure;
