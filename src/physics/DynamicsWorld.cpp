@@ -189,7 +189,7 @@ void DynamicsWorld::solveConstraints(btContactSolverInfo& solverInfo) {
   }
   resolveTouchingImpacts(solverInfo);
   pointBoxes_.start(*dispatcher);
-  const ImpactScan scan(*dispatcher, bounced_, impactStorage_);
+  const ImpactScan scan(*dispatcher, impactStorage_);
   if (mayCut_) {
     const double cut = std::min({scan.earliestImpact(partLength_, kBounceSpeed),
                                  scan.earliestSeparatedImpact(*getBroadphase()->getOverlappingPairCache(),
@@ -225,7 +225,7 @@ void DynamicsWorld::solveUntouched(btContactSolverInfo& solverInfo) {
   btDiscreteDynamicsWorld::solveConstraints(solverInfo);
   closing_.clear();
   noteSolved(closing_, {});
-  bounced_.clear();
+  forgetBounced();
   lastSlipEnd_.reset();
 }
 
@@ -337,7 +337,7 @@ SlipTurn DynamicsWorld::solvePart(btContactSolverInfo& solverInfo, const ImpactS
   solverInfo.m_numIterations = iterations;
   if (impacts) forgetImpacts();
   if (!turned) {
-    bounced_.clear();
+    forgetBounced();
     return turn;
   }
   partStart_.restore();

@@ -99,6 +99,8 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   void resolveTouchingImpacts(btContactSolverInfo& solverInfo);
   // Records the pairs the impact solve just bounced (struck()).
   void noteStruck();
+  // Clears every point's kBouncedFlag as the part ends.
+  void forgetBounced();
   void scaleCarriedImpulses(double ratio);
   // Ends the part at `length` s instead: scales the impulses it carries
   // and gives back the rolling resistance of the time it lost.
@@ -149,7 +151,6 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   std::vector<HeldPlace> heldPlaces_;
   PointBoxes pointBoxes_;  // the boxes the part's points lie on (FaceEdges)
   ImpactScan::Storage impactStorage_;  // the part's ImpactScan's
-  std::vector<btManifoldPoint*> bounced_;  // points bounced at the start of the part
   BodySet stopped_;  // bodies a closing point stopped in the last solve
   // Bodies whose slip friction stopped inside the last solve's part: the
   // share of the part they slipped for (integrateTransforms).

@@ -141,12 +141,14 @@ void DynamicsWorld::resolveTouchingImpacts(btContactSolverInfo& solverInfo) {
   // A bouncing point may still be a few micrometres apart: it bounces as
   // at touch (strikesNow), its gap put back after.
   std::vector<std::pair<btManifoldPoint*, btScalar>> gaps;
+  std::vector<btManifoldPoint*> bouncing;
   for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
     btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
     for (int p = 0; p < manifold->getNumContacts(); ++p) {
       btManifoldPoint& point = manifold->getContactPoint(p);
       if (!(point.m_combinedRestitution > 0)) continue;
-      bounced_.push_back(&point);
+      point.m_contactPointFlags |= kBouncedFlag;
+      bouncing.push_back(&point);
       if (point.getDistance() > 0) {
         gaps.emplace_back(&point, point.getDistance());
         point.setDistance(0);
@@ -168,7 +170,7 @@ void DynamicsWorld::resolveTouchingImpacts(btContactSolverInfo& solverInfo) {
       body->setLinearVelocity(before[static_cast<std::size_t>(i)].first);
       body->setAngularVelocity(before[static_cast<std::size_t>(i)].second);
     }
-    for (btManifoldPoint* point : bounced_) point->m_combinedRestitution = 0;
+    for (btManifoldPoint* point : bouncing) point->m_combinedRestitution = 0;
     solve();
     blendWithinEnergy(m_nonStaticRigidBodies, elastic, energyBefore);
   }
@@ -187,10 +189,10 @@ void DynamicsWorld::resolveTouchingImpacts(btContactSolverInfo& solverInfo) {
     btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
     for (int p = 0; p < manifold->getNumContacts(); ++p, k += 3) {
       btManifoldPoint& point = manifold->getContactPoint(p);
-      const bool bounced = std::find(bounced_.begin(), bounced_.end(), &point) != bounced_.end();
-      point.m_appliedImpulse = bounced ? 0 : carried[k];
-      point.m_appliedImpulseLateral1 = bounced ? 0 : carried[k + 1];
-      point.m_appliedImpulseLateral2 = bounced ? 0 : carried[k + 2];
+      const bool fresh = bounced(point);
+      point.m_appliedImpulse = fresh ? 0 : carried[k];
+      point.m_appliedImpulseLateral1 = fresh ? 0 : carried[k + 1];
+      point.m_appliedImpulseLateral2 = fresh ? 0 : carried[k + 2];
       point.m_combinedRestitution = 0;
     }
   }
@@ -207,10 +209,18 @@ void DynamicsWorld::noteStruck() {
     const btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
     for (int p = 0; p < manifold->getNumContacts(); ++p) {
       const btManifoldPoint& point = manifold->getContactPoint(p);
-      if (std::find(bounced_.begin(), bounced_.end(), &point) == bounced_.end()) continue;
+      if (!bounced(point)) continue;
       struck_.push_back({manifold->getBody0(), manifold->getBody1(), point.m_normalWorldOnB, partOffset_});
       break;
     }
+  }
+}
+
+void DynamicsWorld::forgetBounced() {
+  btDispatcher* dispatcher = getDispatcher();
+  for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
+    btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
+    for (int p = 0; p < manifold->getNumContacts(); ++p) manifold->getContactPoint(p).m_contactPointFlags &= ~kBouncedFlag;
   }
 }
 

@@ -13,6 +13,7 @@
 
 #include "core/Material.h"
 #include "physics/ContactMaterial.h"
+#include "physics/PointFlags.h"
 #include "physics/ShapeKinds.h"
 
 namespace tabletop {
@@ -106,14 +107,13 @@ double restitutionOf(const btPersistentManifold& manifold) {
   return a && b ? combine(*a, *b).restitution : 0.0;
 }
 
-ImpactScan::ImpactScan(btDispatcher& dispatcher, const std::vector<btManifoldPoint*>& bounced, Storage& storage)
-    : dispatcher_(dispatcher), bounced_(bounced), storage_(storage) {
+ImpactScan::ImpactScan(btDispatcher& dispatcher, Storage& storage) : dispatcher_(dispatcher), storage_(storage) {
   storage_.held.clear();
   for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
     const btPersistentManifold& manifold = *dispatcher.getManifoldByIndexInternal(m);
     for (int p = 0; p < manifold.getNumContacts(); ++p) {
       const btManifoldPoint& point = manifold.getContactPoint(p);
-      if (point.getDistance() > kTouching || std::find(bounced.begin(), bounced.end(), &point) != bounced.end()) continue;
+      if (point.getDistance() > kTouching || bounced(point)) continue;
       storage_.held.insert(manifold.getBody0());
       storage_.held.insert(manifold.getBody1());
     }
@@ -284,9 +284,8 @@ void ImpactScan::holdMeanVelocity(double length, const BodySet& stopping,
     btPersistentManifold& manifold = *dispatcher_.getManifoldByIndexInternal(m);
     for (int p = 0; p < manifold.getNumContacts(); ++p) {
       btManifoldPoint& point = manifold.getContactPoint(p);
-      const bool bounced = std::find(bounced_.begin(), bounced_.end(), &point) != bounced_.end();
       const double gap = point.getDistance();
-      if (!bounced && (gap <= kTouching || !(free(manifold.getBody0()) || free(manifold.getBody1())))) continue;
+      if (!bounced(point) && (gap <= kTouching || !(free(manifold.getBody0()) || free(manifold.getBody1())))) continue;
       const double mean = 2.0 * gap - closingSpeed(manifold, point) * length;
       if (!(mean > gap)) continue;
       saved.emplace_back(&point, point.getDistance());

@@ -82,7 +82,7 @@ class ImpactScan {
     BodySet held;                 // bodies a touching point (not a bounced one) holds
     btManifoldArray manifolds;    // a pair's manifolds (earliestSeparatedImpact)
   };
-  ImpactScan(btDispatcher& dispatcher, const std::vector<btManifoldPoint*>& bounced, Storage& storage);
+  ImpactScan(btDispatcher& dispatcher, Storage& storage);
 
   /// The rate, m/s^2, at which the bodies at `point` approach from their
   /// forces (gravity), a body something touches taken as not accelerating.
@@ -130,7 +130,6 @@ class ImpactScan {
   btVector3 accelerationOf(const btCollisionObject& object) const;
 
   btDispatcher& dispatcher_;
-  const std::vector<btManifoldPoint*>& bounced_;
   Storage& storage_;
 };
 

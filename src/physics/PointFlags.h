@@ -1,5 +1,7 @@
 #pragma once
 
+#include <BulletCollision/NarrowPhaseCollision/btManifoldPoint.h>
+
 namespace tabletop {
 
 /// The bits of btManifoldPoint::m_contactPointFlags that tabletop sets,
@@ -12,5 +14,11 @@ inline constexpr int kImpactFlag = 1 << 20;
 /// contact's slip turned round on (DynamicsWorld::holdFrictionAlongLine;
 /// IslandSolver drops the second).
 inline constexpr int kFirstFrictionRowOnly = 1 << 21;
+
+/// The point bounced in the impact solve at the start of the part being
+/// solved (DynamicsWorld::resolveTouchingImpacts); cleared as it ends.
+inline constexpr int kBouncedFlag = 1 << 22;
+
+inline bool bounced(const btManifoldPoint& point) { return (point.m_contactPointFlags & kBouncedFlag) != 0; }
 
 }  // namespace tabletop
