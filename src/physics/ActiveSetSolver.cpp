@@ -36,6 +36,16 @@ ActiveSetSolver::Answer ActiveSetSolver::solve(const btMatrixXu& A, const btVect
   return fallback_.solveMLCP(A, b, x, lo, hi, limitDependency, 0) ? Answer::kByFallback : Answer::kNone;
 }
 
+bool ActiveSetSolver::solveStickingTurns(const btMatrixXu& A, const btVectorXu& b, btVectorXu& x, const btVectorXu& lo,
+                                         const btVectorXu& hi, const btAlignedObjectArray<int>& limitDependency,
+                                         const RowBodies* rowBodies) {
+  if (rowBodies != nullptr && rowBodies->size() != static_cast<std::size_t>(b.rows())) rowBodies = nullptr;
+  stickTurning_ = true;
+  const bool solved = b.rows() > 0 && solveByGuess(A, b, lo, hi, limitDependency, rowBodies, x);
+  stickTurning_ = false;
+  return solved;
+}
+
 bool ActiveSetSolver::solveByGuess(const btMatrixXu& A, const btVectorXu& b, const btVectorXu& lo,
                                    const btVectorXu& hi, const btAlignedObjectArray<int>& limitDependency,
                                    const RowBodies* rowBodies, btVectorXu& x) {
@@ -108,10 +118,15 @@ bool ActiveSetSolver::solveByGuess(const btMatrixXu& A, const btVectorXu& b, con
     if (changed) continue;
     // A sliding row whose answer turns its slip round would stick: where
     // friction sticks and slides on one problem, sticking answers can
-    // press harder than sliding, so that is the fallback's to answer.
+    // press harder than sliding, so that is the fallback's to answer,
+    // unless the fallback has failed (solveStickingTurns).
     for (const int f : slid_) {
-      if (slide_[f] * gapSpeed(a, n, b, f) > kClosingTolerance) return false;
+      if (slide_[f] * gapSpeed(a, n, b, f) <= kClosingTolerance) continue;
+      if (!stickTurning_) return false;
+      slide_[f] = 0;
+      changed = true;
     }
+    if (changed) continue;
     // A non-finite answer (from a matrix that is not finite) would pass
     // every test above, each comparison with NaN being false: hand it on.
     for (int i = 0; i < n; ++i) {

@@ -108,7 +108,10 @@ bool IslandSolver::solveWholeIsland(const btContactSolverInfo& info) {
   raised_ = m_A;
   for (int i = 0; i < raised_.rows(); ++i) raised_.setElem(i, i, raised_(i, i) * (1.0 + kRetryRaise));
   m_x.setZero();
-  return dantzig_.solveMLCP(raised_, m_b, m_x, m_lo, m_hi, m_limitDependencies, info.m_numIterations);
+  if (dantzig_.solveMLCP(raised_, m_b, m_x, m_lo, m_hi, m_limitDependencies, info.m_numIterations)) return true;
+  m_x.setZero();
+  guessed_ = activeSet_.solveStickingTurns(m_A, m_b, m_x, m_lo, m_hi, m_limitDependencies, &rowBodies_);
+  return guessed_;
 }
 
 bool IslandSolver::solveMLCP(const btContactSolverInfo& info) {
