@@ -93,6 +93,9 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   // Each body's velocity and spin now, which the second-order update takes
   // as the part's start (startVelocities_, startSpins_).
   void saveStartVelocities();
+  // The bodies whose velocities changed since the last part ended (a push,
+  // a scene's start): kicked_.
+  void noteKicked();
 
   bool markImpacts(double timeStep);
   void forgetImpacts();
@@ -121,9 +124,13 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   void noteSolved(const ClosingPoints& closing, const std::vector<Slip>& slipping);
   std::vector<btManifoldPoint*> holdFrictionAlongLine();
   void findSlipStops(const std::vector<Slip>& slipping);
+  bool slidIn(const ContactKey& key) const;
   // Slips slower than this share of what kinetic friction removes in a
   // part are taken as stuck; friction this close to its limit as sliding.
   static constexpr double kSlipShare = 1e-3;
+  // Points whose slips' directions have cosines above this with one
+  // another slip along one line (within 2.6 degrees).
+  static constexpr double kOneLine = 0.999;
   // The closing speed, m/s, above which a point that stops a body counts
   // as stopping it at once: a tenth of what smooth forces give in a step,
   // above a resting contact's rounding. A point closing just under it
@@ -159,6 +166,15 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
     btVector3 normal;    // of the contacts it slipped on, unit
   };
   std::unordered_map<const btCollisionObject*, SlipStop> slipShare_;
+  // Bodies that slipped on a face (three points or more carrying load) in
+  // the last solve's part, by the face with the largest friction limit:
+  // the share of the part it slipped for and its normal, about which only
+  // that friction turns the body (integrateTransforms).
+  struct FaceSlip {
+    SlipStop slip;
+    double limit = 0;  // N s
+  };
+  std::unordered_map<const btCollisionObject*, FaceSlip> faceSlip_;
   SlidingContacts sliding_;  // contacts whose friction was at its limit in it
   SlidingContacts slidingNext_;  // findSlipStops', kept to reuse its storage
   // A contact's friction in the last solve, its limit, and its points'
@@ -168,8 +184,11 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
     const btPersistentManifold* manifold;
     double friction = 0, limit = 0;
     btVector3 normal{0, 0, 0};
+    int loaded = 0;  // slipping points carrying load
   };
   std::vector<std::pair<ContactKey, SlipUse>> slipUse_;
+  std::vector<std::pair<btVector3, btVector3>> endVelocities_;  // each body's at the last part's end
+  BodySet kicked_;  // noteKicked's
   std::vector<btVector3> startVelocities_;
   std::vector<btVector3> startSpins_;    // rad/s, read with startVelocities_
   std::vector<btTransform> startPoses_;  // each body's at the part's start, when one turns by its mean rate

@@ -44,13 +44,17 @@ Scenario pushScene(const PushCase& c) {
   text << R"({"name": "A", "shape": ")" << c.shape << R"(", "size": )" << c.size << R"(, "position": [)" << x0
        << ", " << z0 << R"(], "on": ")" << (base ? "Base" : c.support) << R"(", "mass": )" << kPushedMass
        << R"(, "material": {"friction": )" << c.friction << R"(, "rolling_friction": )" << c.rollingFriction
-       << R"(}}], "script": [{"push": {"entity": "A", "angle": )" << c.angle << ", ";
-  if (c.step > 0) {
-    text << R"("step": )" << c.step;
-  } else {
-    text << R"("impulse": )" << c.impulse;
+       << R"(}, "spin": [0, )" << c.spin << R"(, 0]}], "script": [)";
+  if (c.step > 0 || c.impulse > 0) {
+    text << R"({"push": {"entity": "A", "angle": )" << c.angle << ", ";
+    if (c.step > 0) {
+      text << R"("step": )" << c.step;
+    } else {
+      text << R"("impulse": )" << c.impulse;
+    }
+    text << "}}";
   }
-  text << "}}]}";
+  text << "]}";
   return ScenarioLoader::loadText(text.str(), "push.json");
 }
 
@@ -79,7 +83,10 @@ std::string describe(const RideCase& c) {
 
 std::string describe(const PushCase& c) {
   std::ostringstream s;
-  s << c.shape << " " << c.size << " on the " << c.support << ", at " << c.angle << " deg, " << c.rate << " Hz";
+  s << c.shape << " " << c.size << " on the " << c.support << ", ";
+  if (c.spin != 0) s << "spun at " << c.spin << " rad/s";
+  else s << "at " << c.angle << " deg";
+  s << ", " << c.rate << " Hz";
   return s.str();
 }
 

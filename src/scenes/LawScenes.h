@@ -14,8 +14,8 @@ namespace tabletop {
 /// 100 kg cylinder 0.8 m in radius and 0.1 m high standing there.
 inline constexpr const char* kLawSupports[] = {"table", "ground", "slab", "drum"};
 
-/// One entity pushed across a support, the scene of the sliding, rolling
-/// and step laws: 1.5 kg, pushed at a
+/// One entity pushed across a support, the scene of the sliding, rolling,
+/// step and spinning laws: 1.5 kg, pushed (or spun) at a
 /// world angle from the table's centre (0.3 m back from it), or 3 m from
 /// it on the floor, or on the slab or the drum resting there, towards open
 /// space. The floor (friction 1) holds either against the slider's
@@ -30,7 +30,8 @@ struct PushCase {
   double friction = 0.25;
   double rollingFriction = 0;  ///< m
   double impulse = 0;          ///< N s, or else
-  double step = 0;             ///< m, a push by step
+  double step = 0;             ///< m, a push by step (neither: no push)
+  double spin = 0;             ///< rad/s about the vertical at the start
 };
 
 inline constexpr double kPushedMass = 1.5;  ///< kg
