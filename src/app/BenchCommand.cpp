@@ -92,8 +92,8 @@ void addBenchOptions(CLI::App& command, BenchOptions& options) {
   command.add_flag("--baseline", options.baseline,
                    "Time each scene at each of --rates against the same scene in Bullet's own default pipeline");
   command.add_flag("--laws", options.laws,
-                   "Hold every shape on the table, the floor and a slab to the sliding, rolling and step laws, "
-                   "pushed at four angles, at each of --rates: the worst error against the closed form");
+                   "Hold every shape on the table, the floor, a slab and a drum to the sliding, rolling, step, "
+                   "spinning and bouncing laws, at each of --rates: the worst error against the closed form");
   enumOption(command.add_option("--modes", options.modes,
                                 "Modes to sweep (default bullet,compat,rules; compat and rules at the scene's own "
                                 "iterations)")

@@ -36,7 +36,7 @@ struct BenchOptions {
   bool switches = false;
   std::vector<int> scale;
   bool hard = false;  ///< --hard: run every scene in SCENARIOS/hard once and measure its stability
-  bool laws = false;  ///< --laws: the sliding, rolling and step laws over shapes, supports and angles
+  bool laws = false;  ///< --laws: the sliding, rolling, step, spinning and bouncing laws over shapes and supports
   bool baseline = false;  ///< --baseline: each scene's cost against Bullet's own default pipeline
 };
 

@@ -20,13 +20,16 @@ struct ShapeSize {
   const char* size;
   double radius;  // a sphere's, m
   double below;   // m, its centre of mass above its lowest point, standing
+  double rho = 0;  // m, its base's contact points' distance from its axis (0: not one)
+  double k2 = 0;   // m^2, I / m about the vertical
 };
 
-const ShapeSize kSolids[] = {{"cube", "0.1", 0, 0.05},
-                             {"box", "[0.2, 0.05, 0.12]", 0, 0.025},
-                             {"cylinder", "[0.05, 0.05, 0.1]", 0, 0.05},
-                             {"cylinder", "[0.08, 0.08, 0.03]", 0, 0.015},
-                             {"cylinder", "[0.05, 0.03, 0.1]", 0, ShapeGeometry::cylinder(0.05, 0.03, 0.1).below()}};
+const ShapeSize kSolids[] = {
+    {"cube", "0.1", 0, 0.05, std::sqrt(2.0) * 0.05, 0.1 * 0.1 / 6.0},
+    {"box", "[0.2, 0.05, 0.12]", 0, 0.025, std::hypot(0.1, 0.06), (0.2 * 0.2 + 0.12 * 0.12) / 12.0},
+    {"cylinder", "[0.05, 0.05, 0.1]", 0, 0.05, 0.05, 0.05 * 0.05 / 2.0},
+    {"cylinder", "[0.08, 0.08, 0.03]", 0, 0.015, 0.08, 0.08 * 0.08 / 2.0},
+    {"cylinder", "[0.05, 0.03, 0.1]", 0, ShapeGeometry::cylinder(0.05, 0.03, 0.1).below()}};
 const ShapeSize kSpheres[] = {{"sphere", "0.05", 0.05, 0.05}, {"sphere", "0.1", 0.1, 0.1}};
 const double kRestitutions[] = {0.0, 0.5, 0.9};
 const double kAngles[] = {0.0, 45.0, 77.0, 200.0};
@@ -35,6 +38,7 @@ constexpr double kSlideImpulse = 2.4;  // N s: v0 = 1.6 m/s
 constexpr double kRollImpulse = 0.6;   // N s: v0 = 0.4 m/s
 constexpr double kRollingFriction = 0.002;  // m
 constexpr double kStep = 0.2;          // m
+const double kSpins[] = {5.0, -12.0};  // rad/s about the vertical
 
 // One law for one shape on one support at one rate: the worst over angles.
 LawPoint measure(const std::string& law, const ShapeSize& shape, const char* support, double rate) {
@@ -60,6 +64,30 @@ LawPoint measure(const std::string& law, const ShapeSize& shape, const char* sup
     const double error = r.complete ? std::abs(std::hypot(a.position.x - x0, a.position.z - z0) - expected) : INFINITY;
     point.worstError = std::max(point.worstError, error);
     if (!sphere) point.worstTurn = std::max(point.worstTurn, std::abs(a.yawDegrees));
+  }
+  return point;
+}
+
+// A spin on the base against w0^2 / (2 alpha), alpha = mu g rho / k^2:
+// the worst distance its contact points end from where the closed form
+// puts them (rho times the angle's error), and the worst drift, m.
+LawPoint measureSpin(const ShapeSize& shape, const char* support, double rate) {
+  LawPoint point{"spin", std::string(shape.shape) + " " + shape.size, support, rate, 0.0, 0.0};
+  for (const double w0 : kSpins) {
+    PushCase c{shape.shape, shape.size, support, 0.0, rate};
+    c.spin = w0;
+    const Scenario s = pushScene(c);
+    const double alpha = c.friction * s.settings.gravity * shape.rho / shape.k2;
+    const double expected = w0 * std::abs(w0) / (2.0 * alpha);
+    auto sim = buildSimulation(s, s.settings, SimulationMode::Bullet);
+    const RunResult r = runScript(s, s.settings, *sim);
+    const EntityState& a = r.entities.back();
+    const auto [x0, z0] = pushStart(c);
+    const double turned = a.yawDegrees * std::acos(-1.0) / 180.0;
+    const double error = r.complete ? std::max(shape.rho * std::abs(turned - expected),
+                                               std::hypot(a.position.x - x0, a.position.z - z0))
+                                    : INFINITY;
+    point.worstError = std::max(point.worstError, error);
   }
   return point;
 }
@@ -92,6 +120,9 @@ std::vector<LawPoint> measureLaws(const std::vector<double>& rates, const Measur
   for (const ShapeSize& s : kSpheres) jobs.emplace_back("roll", &s);
   for (const ShapeSize& s : kSolids) jobs.emplace_back("step", &s);
   for (const ShapeSize& s : kSpheres) jobs.emplace_back("step", &s);
+  for (const ShapeSize& s : kSolids) {
+    if (s.rho > 0) jobs.emplace_back("spin", &s);
+  }
   jobs.emplace_back("bounce", &kSpheres[0]);
   for (const ShapeSize& s : kSolids) jobs.emplace_back("bounce", &s);
   hooks.start(static_cast<long>(jobs.size() * std::size(kLawSupports) * rates.size()));
@@ -100,7 +131,9 @@ std::vector<LawPoint> measureLaws(const std::vector<double>& rates, const Measur
     for (const char* support : kLawSupports) {
       for (const double rate : rates) {
         if (hooks.stop()) return points;
-        points.push_back(law == "bounce" ? measureBounce(*shape, support, rate) : measure(law, *shape, support, rate));
+        points.push_back(law == "bounce" ? measureBounce(*shape, support, rate)
+                         : law == "spin" ? measureSpin(*shape, support, rate)
+                                         : measure(law, *shape, support, rate));
         hooks.advance(law + " " + shape->shape);
       }
     }
@@ -111,8 +144,8 @@ std::vector<LawPoint> measureLaws(const std::vector<double>& rates, const Measur
 ResultTable lawTable(const std::vector<LawPoint>& points) {
   ResultTable t;
   t.title =
-      "laws: the worst error against the closed form, over pushes at 0, 45, 77 and 200 degrees, or over drops at "
-      "e = 0, 0.5 and 0.9";
+      "laws: the worst error against the closed form, over pushes at 0, 45, 77 and 200 degrees, over drops at "
+      "e = 0, 0.5 and 0.9, or over spins of 5 and -12 rad/s";
   std::vector<double> rates;
   for (const LawPoint& p : points) {
     if (std::find(rates.begin(), rates.end(), p.rate) == rates.end()) rates.push_back(p.rate);
@@ -145,7 +178,7 @@ ResultTable lawTable(const std::vector<LawPoint>& points) {
       row.push_back(cell(nlohmann::json((*found)->worstError), ResultTable::Cell(cell((*found)->worstError * 1000.0, 4)).shown));
       turn = std::max(turn, (*found)->worstTurn);
     }
-    row.push_back(shape.rfind("sphere", 0) == 0 ? cell(nullptr, "-") : cell(turn, 3));
+    row.push_back(shape.rfind("sphere", 0) == 0 || law == "spin" ? cell(nullptr, "-") : cell(turn, 3));
     t.rows.push_back(std::move(row));
   }
   return t;

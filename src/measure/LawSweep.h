@@ -16,6 +16,10 @@ namespace tabletop {
 ///  - roll: spheres (rf 2 mm) given v0 = 0.4 m/s slip, then roll, to
 ///    rollingDistance();
 ///  - step: every shape pushed by a 0.2 m step travels it;
+///  - spin: a cube, a box and cylinders spun about the vertical at 5 and
+///    -12 rad/s turn w0^2 / (2 alpha) and stay where they stand
+///    (tests/sim/SpinTest.cpp); the error is how far the base's contact
+///    points end from their closed-form place, or the drift if larger;
 ///  - bounce: a sphere, and every other shape landing flat, dropped 0.3 m
 ///    with e = 0, 0.5 and 0.9, follows free fall and its rebound at e
 ///    times the impact speed (tests/sim/RestitutionTest.cpp).
