@@ -242,6 +242,9 @@ btScalar IslandSolver::solveGroupCacheFriendlySetup(btCollisionObject** bodies, 
   way_ = sweepsOnly_ ? Way::Sweep : chooseWay(manifolds, numManifolds, numConstraints);
   counted_ = !sweepsOnly_ && numManifolds > 0;
   if (way_ == Way::LongSweeps) longSweepsTaken_ = true;
+  if (way_ != Way::Pivot && !sweepsOnly_) {
+    for (int i = 0; i < numBodies; ++i) swept_.insert(bodies[i]);
+  }
   if (way_ == Way::Pivot) {
     btContactSolverInfo direct = info;
     direct.m_globalCfm = kDirectCfm;

@@ -7,6 +7,7 @@
 
 #include "core/ContactSolver.h"
 #include "physics/ActiveSetSolver.h"
+#include "physics/BodySet.h"
 
 namespace tabletop {
 
@@ -73,6 +74,11 @@ class IslandSolver : private IslandSolverParts, public btMLCPSolver {
   /// Whether an island since the last call carried a load but was too
   /// large to pivot, and was given the long sweeps; clears it. Such an
   /// island needs steps of at most kLongSweepStep (World::substeps).
+  /// The bodies of the islands swept since forgetSwept(): their friction
+  /// is the sweeps', not at its bound where it slides (DynamicsWorld turns
+  /// only a pivoted body by its mean spin).
+  const BodySet& swept() const { return swept_; }
+  void forgetSwept() { swept_.clear(); }
   bool takeLongSweeps() {
     const bool taken = longSweepsTaken_;
     longSweepsTaken_ = false;
@@ -160,6 +166,7 @@ class IslandSolver : private IslandSolverParts, public btMLCPSolver {
   bool sweepsOnly_ = false;
   Way way_ = Way::Sweep;    // how the island being solved is solved
   bool longSweepsTaken_ = false;
+  BodySet swept_;
   bool counted_ = false;    // the island being solved counts in use_
   bool guessed_ = false;    // the island just solved exactly was solved by the guess
   SolverUse use_;
