@@ -48,7 +48,8 @@ void keepDeepestPoint(btPersistentManifold& manifold) {
 
 DynamicsWorld::DynamicsWorld(btDispatcher* dispatcher, btBroadphaseInterface* broadphase,
                              btConstraintSolver* solver, btCollisionConfiguration* configuration)
-    : btDiscreteDynamicsWorld(dispatcher, broadphase, solver, configuration) {
+    : btDiscreteDynamicsWorld(dispatcher, broadphase, solver, configuration),
+      islandSolver_(dynamic_cast<IslandSolver*>(solver)) {
   // Bullet made its own with btAlignedAlloc and placement new.
   if (m_ownsIslandManager) {
     m_islandManager->~btSimulationIslandManager();
@@ -69,6 +70,8 @@ void DynamicsWorld::applyGravity() {
 
 void DynamicsWorld::noteKicked() {
   kicked_.clear();
+  // Only a contact's slip reads it: none without one.
+  if (getDispatcher()->getNumManifolds() == 0) return;
   const auto n = static_cast<std::size_t>(m_nonStaticRigidBodies.size());
   for (std::size_t i = 0; i < n; ++i) {
     const btRigidBody* body = m_nonStaticRigidBodies[static_cast<int>(i)];
@@ -149,7 +152,6 @@ void DynamicsWorld::integrateTransforms(btScalar) {
   btDiscreteDynamicsWorld::integrateTransforms(timeStep);
   if (!smooth) return;
   const btScalar limit = smoothAcceleration_ * timeStep;
-  const auto* islands = dynamic_cast<const IslandSolver*>(m_constraintSolver);
   for (int i = 0; i < m_nonStaticRigidBodies.size(); ++i) {
     btRigidBody* body = m_nonStaticRigidBodies[i];
     if (!body->isActive() || body->isStaticOrKinematicObject()) continue;
@@ -173,7 +175,7 @@ void DynamicsWorld::integrateTransforms(btScalar) {
     // Not where sweeps solved it: their friction is not at its bound, and
     // turned so, the 55-cube pyramid drifted 0.32 mm, not 0.21.
     const auto face = faceSlip_.find(body);
-    if (face != faceSlip_.end() && !meanTurn_.contains(body) && !(islands && islands->swept().contains(body))) {
+    if (face != faceSlip_.end() && !meanTurn_.contains(body) && !(islandSolver_ && islandSolver_->swept().contains(body))) {
       const SlipStop& slip = face->second.slip;
       const double spinChange = slip.normal.dot(body->getAngularVelocity() - startSpins_[static_cast<std::size_t>(i)]);
       if (spinChange != 0) {
@@ -357,7 +359,7 @@ SlipTurn DynamicsWorld::solvePart(btContactSolverInfo& solverInfo, const ImpactS
   // a part cut at a slip left every body of a scene with more than one
   // island unsupported, and they fell 0.9 mm. The islands are found afresh.
   if (how == PartSolve::kAfterSlipCut) calculateSimulationIslands();
-  if (auto* islands = dynamic_cast<IslandSolver*>(m_constraintSolver)) islands->forgetSwept();
+  if (islandSolver_) islandSolver_->forgetSwept();
   btDiscreteDynamicsWorld::solveConstraints(solverInfo);
   const SlipTurn turn = !mayTurn.empty() ? earliestSlipTurn(mayTurn, g, partLength_, kSlipShare)
                                          : SlipTurn{partLength_, nullptr, nullptr, btVector3(0, 0, 0), false};

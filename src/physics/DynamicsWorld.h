@@ -16,6 +16,7 @@
 
 namespace tabletop {
 
+class IslandSolver;
 
 /// Bullet's discrete dynamics world with its contacts and integration
 /// corrected where a closed form showed them wrong (docs/bullet-corrections.md
@@ -212,6 +213,7 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   std::optional<SlipEnd> lastSlipEnd_;
   std::vector<std::pair<btRigidBody*, btVector3>> resisted_;  // the part's rolling-resistance impulses, N m s
   ContactIslands islands_;   // replaces the island manager Bullet made
+  IslandSolver* islandSolver_;  // the constraint solver, if tabletop's (else null)
 };
 
 }  // namespace tabletop

@@ -130,7 +130,7 @@ void DynamicsWorld::resolveTouchingImpacts(btContactSolverInfo& solverInfo) {
   }
   // Swept, never pivoted: restitution is exact only without the pivoting's
   // compliance, and the energy blend below assumes a dissipative solve.
-  auto* islands = dynamic_cast<IslandSolver*>(m_constraintSolver);
+  IslandSolver* islands = islandSolver_;
   const auto solve = [&] {
     if (islands != nullptr) islands->setSweepsOnly(true);
     m_constraintSolver->solveGroup(&bodies[0], bodies.size(), dispatcher->getInternalManifoldPointer(),
