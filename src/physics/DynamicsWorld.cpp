@@ -175,7 +175,8 @@ void DynamicsWorld::integrateTransforms(btScalar) {
     // Not where sweeps solved it: their friction is not at its bound, and
     // turned so, the 55-cube pyramid drifted 0.32 mm, not 0.21.
     const auto face = faceSlip_.find(body);
-    if (face != faceSlip_.end() && !meanTurn_.contains(body) && !(islandSolver_ && islandSolver_->swept().contains(body))) {
+    const bool swept = islandSolver_ && islandSolver_->swept().contains(body);
+    if (face != faceSlip_.end() && !meanTurn_.contains(body) && !swept) {
       const SlipStop& slip = face->second.slip;
       const double spinChange = slip.normal.dot(body->getAngularVelocity() - startSpins_[static_cast<std::size_t>(i)]);
       if (spinChange != 0) {

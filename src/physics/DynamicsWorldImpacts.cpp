@@ -220,7 +220,9 @@ void DynamicsWorld::forgetBounced() {
   btDispatcher* dispatcher = getDispatcher();
   for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
     btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
-    for (int p = 0; p < manifold->getNumContacts(); ++p) manifold->getContactPoint(p).m_contactPointFlags &= ~kBouncedFlag;
+    for (int p = 0; p < manifold->getNumContacts(); ++p) {
+      manifold->getContactPoint(p).m_contactPointFlags &= ~kBouncedFlag;
+    }
   }
 }
 
