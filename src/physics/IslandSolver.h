@@ -71,14 +71,14 @@ class IslandSolver : private IslandSolverParts, public btMLCPSolver {
   /// While on, every group is swept and none is counted (the impacts'
   /// solve of every touching point, DynamicsWorld).
   void setSweepsOnly(bool on) { sweepsOnly_ = on; }
-  /// Whether an island since the last call carried a load but was too
-  /// large to pivot, and was given the long sweeps; clears it. Such an
-  /// island needs steps of at most kLongSweepStep (World::substeps).
   /// The bodies of the islands swept since forgetSwept(): their friction
   /// is the sweeps', not at its bound where it slides (DynamicsWorld turns
   /// only a pivoted body by its mean spin).
   const BodySet& swept() const { return swept_; }
   void forgetSwept() { swept_.clear(); }
+  /// Whether an island since the last call carried a load but was too
+  /// large to pivot, and was given the long sweeps; clears it. Such an
+  /// island needs steps of at most kLongSweepStep (World::substeps).
   bool takeLongSweeps() {
     const bool taken = longSweepsTaken_;
     longSweepsTaken_ = false;
