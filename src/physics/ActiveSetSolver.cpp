@@ -27,7 +27,7 @@ ActiveSetSolver::Answer ActiveSetSolver::solve(const btMatrixXu& A, const btVect
                                                const RowBodies* rowBodies) {
   if (b.rows() > 0) {
     if (rowBodies != nullptr && rowBodies->size() != static_cast<std::size_t>(b.rows())) rowBodies = nullptr;
-    if (solveByGuess(A, b, lo, hi, limitDependency, rowBodies, x)) {
+    if (solveByGuess(A, b, lo, hi, limitDependency, rowBodies, TurnedRows::kHandOn, x)) {
       ++solved_;
       return Answer::kByGuess;
     }
@@ -40,15 +40,12 @@ bool ActiveSetSolver::solveStickingTurns(const btMatrixXu& A, const btVectorXu& 
                                          const btVectorXu& hi, const btAlignedObjectArray<int>& limitDependency,
                                          const RowBodies* rowBodies) {
   if (rowBodies != nullptr && rowBodies->size() != static_cast<std::size_t>(b.rows())) rowBodies = nullptr;
-  stickTurning_ = true;
-  const bool solved = b.rows() > 0 && solveByGuess(A, b, lo, hi, limitDependency, rowBodies, x);
-  stickTurning_ = false;
-  return solved;
+  return b.rows() > 0 && solveByGuess(A, b, lo, hi, limitDependency, rowBodies, TurnedRows::kStick, x);
 }
 
 bool ActiveSetSolver::solveByGuess(const btMatrixXu& A, const btVectorXu& b, const btVectorXu& lo,
                                    const btVectorXu& hi, const btAlignedObjectArray<int>& limitDependency,
-                                   const RowBodies* rowBodies, btVectorXu& x) {
+                                   const RowBodies* rowBodies, TurnedRows turned, btVectorXu& x) {
   const int n = b.rows();
   if (A.rows() != n || A.cols() != n || limitDependency.size() != n || x.rows() != n) return false;
   if (!collectPoints(b, lo, hi, limitDependency)) return false;
@@ -122,7 +119,7 @@ bool ActiveSetSolver::solveByGuess(const btMatrixXu& A, const btVectorXu& b, con
     // unless the fallback has failed (solveStickingTurns).
     for (const int f : slid_) {
       if (slide_[f] * gapSpeed(a, n, b, f) <= kClosingTolerance) continue;
-      if (!stickTurning_) return false;
+      if (turned == TurnedRows::kHandOn) return false;
       slide_[f] = 0;
       changed = true;
     }

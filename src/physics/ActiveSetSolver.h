@@ -92,8 +92,13 @@ class ActiveSetSolver : public btMLCPSolverInterface {
   static constexpr double kClosingTolerance = 1e-12;
 
  private:
+  // What the guess does with a sliding row whose answer turns its slip
+  // round: hands the problem on (the fallback's to answer), or makes the
+  // row stick.
+  enum class TurnedRows { kHandOn, kStick };
   bool solveByGuess(const btMatrixXu& A, const btVectorXu& b, const btVectorXu& lo, const btVectorXu& hi,
-                    const btAlignedObjectArray<int>& limitDependency, const RowBodies* rowBodies, btVectorXu& x);
+                    const btAlignedObjectArray<int>& limitDependency, const RowBodies* rowBodies, TurnedRows turned,
+                    btVectorXu& x);
   // Finds the points (normal rows) and each one's friction rows; false if
   // the problem is not a contact problem the guess may answer.
   bool collectPoints(const btVectorXu& b, const btVectorXu& lo, const btVectorXu& hi,
@@ -126,7 +131,6 @@ class ActiveSetSolver : public btMLCPSolverInterface {
   double gapSpeed(const double* a, int n, const btVectorXu& b, int row) const;
 
   btMLCPSolverInterface& fallback_;
-  bool stickTurning_ = false;  // solveStickingTurns is running
   long solved_ = 0;
   long handedOn_ = 0;
   // Scratch, kept between problems so that a step allocates nothing.
