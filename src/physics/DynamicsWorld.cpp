@@ -163,10 +163,11 @@ void DynamicsWorld::integrateTransforms(btScalar) {
     // share of the part spent slipping (1 unless the slip stopped in it).
     // Only the change across the contact's normal comes from the slip.
     btVector3 mean = change;
-    if (const auto slip = slipShare_.find(body); slip != slipShare_.end()) {
-      const btVector3& n = slip->second.normal;
+    const auto slip = slips_.find(body);
+    if (slip != slips_.end() && slip->second.stop.share < 1.0) {
+      const btVector3& n = slip->second.stop.normal;
       const btVector3 across = change - n * change.dot(n);
-      mean = change - across * (1.0 - slip->second.share);
+      mean = change - across * (1.0 - slip->second.stop.share);
     }
     btTransform pose = body->getWorldTransform();
     // The same for the spin of a body slipping on a face, about its
@@ -174,13 +175,12 @@ void DynamicsWorld::integrateTransforms(btScalar) {
     // a cube spun on the table turned 37% short at 60 Hz (first order).
     // Not where sweeps solved it: their friction is not at its bound, and
     // turned so, the 55-cube pyramid drifted 0.32 mm, not 0.21.
-    const auto face = faceSlip_.find(body);
     const bool swept = islandSolver_ && islandSolver_->swept().contains(body);
-    if (face != faceSlip_.end() && !meanTurn_.contains(body) && !swept) {
-      const SlipStop& slip = face->second.slip;
-      const double spinChange = slip.normal.dot(body->getAngularVelocity() - startSpins_[static_cast<std::size_t>(i)]);
+    if (slip != slips_.end() && slip->second.faceLimit > 0 && !meanTurn_.contains(body) && !swept) {
+      const SlipStop& face = slip->second.face;
+      const double spinChange = face.normal.dot(body->getAngularVelocity() - startSpins_[static_cast<std::size_t>(i)]);
       if (spinChange != 0) {
-        const btQuaternion back(slip.normal, -spinChange * slip.share * (timeStep / 2));
+        const btQuaternion back(face.normal, -spinChange * face.share * (timeStep / 2));
         pose.setRotation((back * pose.getRotation()).normalized());
       }
     }

@@ -160,22 +160,24 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   PointBoxes pointBoxes_;  // the boxes the part's points lie on (FaceEdges)
   ImpactScan::Storage impactStorage_;  // the part's ImpactScan's
   BodySet stopped_;  // bodies a closing point stopped in the last solve
-  // Bodies whose slip friction stopped inside the last solve's part: the
-  // share of the part they slipped for (integrateTransforms).
+  // A slip's share of the part (slipped for) and its contacts' normal, unit.
   struct SlipStop {
-    double share = 1.0;  // of the part slipped for
-    btVector3 normal;    // of the contacts it slipped on, unit
+    double share = 1.0;
+    btVector3 normal{0, 0, 0};
   };
-  std::unordered_map<const btCollisionObject*, SlipStop> slipShare_;
-  // Bodies that slipped on a face (three points or more carrying load) in
-  // the last solve's part, by the face with the largest friction limit:
-  // the share of the part it slipped for and its normal, about which only
-  // that friction turns the body (integrateTransforms).
-  struct FaceSlip {
-    SlipStop slip;
-    double limit = 0;  // N s
+  // What a body's slips did in the last solve's part (findSlipStops, read
+  // by integrateTransforms):
+  // - stop: the first of its contacts whose slip friction stopped inside
+  //   the part (share below 1; 1: none stopped);
+  // - face: the face (three points or more carrying load) with the largest
+  //   friction limit it slipped on (faceLimit, N s; 0: none), about whose
+  //   normal only that friction turns the body.
+  struct BodySlip {
+    SlipStop stop;
+    SlipStop face;
+    double faceLimit = 0;
   };
-  std::unordered_map<const btCollisionObject*, FaceSlip> faceSlip_;
+  std::unordered_map<const btCollisionObject*, BodySlip> slips_;
   SlidingContacts sliding_;  // contacts whose friction was at its limit in it
   SlidingContacts slidingNext_;  // findSlipStops', kept to reuse its storage
   // A contact's friction in the last solve, its limit, and its points'

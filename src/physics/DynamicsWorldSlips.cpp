@@ -67,8 +67,7 @@ bool DynamicsWorld::slidIn(const ContactKey& key) const {
 // slipped for the share of the part that the friction used is of what
 // kinetic friction gives, that friction being constant while it slips.
 void DynamicsWorld::findSlipStops(const std::vector<Slip>& slipping) {
-  slipShare_.clear();
-  faceSlip_.clear();
+  slips_.clear();
   // Per contact: a body may slip on two at once (a cube under a rider on
   // the table), and one may stop while the other slips on.
   // By contact (slipping lists a contact's points together, so each is
@@ -106,15 +105,14 @@ void DynamicsWorld::findSlipStops(const std::vector<Slip>& slipping) {
     const double share = through ? 1.0 : u.friction / u.limit;
     for (const btCollisionObject* body : {u.manifold->getBody0(), u.manifold->getBody1()}) {
       if (body->isStaticOrKinematicObject()) continue;
-      if (u.loaded >= 3 && slidBefore) {
-        const auto face = faceSlip_.find(body);
-        if (face == faceSlip_.end() || u.limit > face->second.limit) {
-          faceSlip_[body] = {{share, u.normal.normalized()}, u.limit};
-        }
+      const bool face = u.loaded >= 3 && slidBefore;
+      if (!face && through) continue;
+      BodySlip& slip = slips_[body];
+      if (face && u.limit > slip.faceLimit) {
+        slip.face = {share, u.normal.normalized()};
+        slip.faceLimit = u.limit;
       }
-      if (through) continue;
-      const auto known = slipShare_.find(body);
-      if (known == slipShare_.end() || share < known->second.share) slipShare_[body] = {share, u.normal.normalized()};
+      if (!through && share < slip.stop.share) slip.stop = {share, u.normal.normalized()};
     }
   }
   std::swap(sliding_, slidingNext_);
