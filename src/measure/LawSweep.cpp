@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <string>
 #include <tuple>
 
@@ -20,15 +21,13 @@ struct ShapeSize {
   const char* size;
   double radius;  // a sphere's, m
   double below;   // m, its centre of mass above its lowest point, standing
-  double rho = 0;  // m, its base's contact points' distance from its axis (0: not one)
-  double k2 = 0;   // m^2, I / m about the vertical
 };
 
 const ShapeSize kSolids[] = {
-    {"cube", "0.1", 0, 0.05, std::sqrt(2.0) * 0.05, 0.1 * 0.1 / 6.0},
-    {"box", "[0.2, 0.05, 0.12]", 0, 0.025, std::hypot(0.1, 0.06), (0.2 * 0.2 + 0.12 * 0.12) / 12.0},
-    {"cylinder", "[0.05, 0.05, 0.1]", 0, 0.05, 0.05, 0.05 * 0.05 / 2.0},
-    {"cylinder", "[0.08, 0.08, 0.03]", 0, 0.015, 0.08, 0.08 * 0.08 / 2.0},
+    {"cube", "0.1", 0, 0.05},
+    {"box", "[0.2, 0.05, 0.12]", 0, 0.025},
+    {"cylinder", "[0.05, 0.05, 0.1]", 0, 0.05},
+    {"cylinder", "[0.08, 0.08, 0.03]", 0, 0.015},
     {"cylinder", "[0.05, 0.03, 0.1]", 0, ShapeGeometry::cylinder(0.05, 0.03, 0.1).below()}};
 const ShapeSize kSpheres[] = {{"sphere", "0.05", 0.05, 0.05}, {"sphere", "0.1", 0.1, 0.1}};
 const double kRestitutions[] = {0.0, 0.5, 0.9};
@@ -68,23 +67,23 @@ LawPoint measure(const std::string& law, const ShapeSize& shape, const char* sup
   return point;
 }
 
-// A spin on the base against w0^2 / (2 alpha), alpha = mu g rho / k^2:
-// the worst distance its contact points end from where the closed form
-// puts them (rho times the angle's error), and the worst drift, m.
+// A spin on the base against its closed form (spinLaw): the worst
+// distance its contact points end from where the closed form puts them
+// (rho times the angle's error), and the worst drift, m.
 LawPoint measureSpin(const ShapeSize& shape, const char* support, double rate) {
   LawPoint point{"spin", std::string(shape.shape) + " " + shape.size, support, rate, 0.0, 0.0};
   for (const double w0 : kSpins) {
     PushCase c{shape.shape, shape.size, support, 0.0, rate};
     c.spin = w0;
     const Scenario s = pushScene(c);
-    const double alpha = c.friction * s.settings.gravity * shape.rho / shape.k2;
-    const double expected = w0 * std::abs(w0) / (2.0 * alpha);
+    const std::optional<SpinLaw> law = spinLaw(c);
+    if (!law) return point;
     auto sim = buildSimulation(s, s.settings, SimulationMode::Bullet);
     const RunResult r = runScript(s, s.settings, *sim);
     const EntityState& a = r.entities.back();
     const auto [x0, z0] = pushStart(c);
     const double turned = a.yawDegrees * std::acos(-1.0) / 180.0;
-    const double error = r.complete ? std::max(shape.rho * std::abs(turned - expected),
+    const double error = r.complete ? std::max(law->rho * std::abs(turned - law->angle),
                                                std::hypot(a.position.x - x0, a.position.z - z0))
                                     : INFINITY;
     point.worstError = std::max(point.worstError, error);
@@ -120,9 +119,7 @@ std::vector<LawPoint> measureLaws(const std::vector<double>& rates, const Measur
   for (const ShapeSize& s : kSpheres) jobs.emplace_back("roll", &s);
   for (const ShapeSize& s : kSolids) jobs.emplace_back("step", &s);
   for (const ShapeSize& s : kSpheres) jobs.emplace_back("step", &s);
-  for (const ShapeSize& s : kSolids) {
-    if (s.rho > 0) jobs.emplace_back("spin", &s);
-  }
+  for (const ShapeSize& s : kSolids) jobs.emplace_back("spin", &s);
   jobs.emplace_back("bounce", &kSpheres[0]);
   for (const ShapeSize& s : kSolids) jobs.emplace_back("bounce", &s);
   hooks.start(static_cast<long>(jobs.size() * std::size(kLawSupports) * rates.size()));

@@ -58,6 +58,21 @@ Scenario pushScene(const PushCase& c) {
   return ScenarioLoader::loadText(text.str(), "push.json");
 }
 
+std::optional<SpinLaw> spinLaw(const PushCase& c) {
+  const Scenario s = pushScene(c);
+  const ShapeGeometry& g = s.entities.back().geometry;
+  double rho = 0;
+  switch (g.kind()) {
+    case ShapeKind::Sphere: return std::nullopt;
+    case ShapeKind::Cylinder: rho = g.radius(); break;
+    case ShapeKind::Cube:
+    case ShapeKind::SolidBox: rho = std::hypot(g.halfExtents().x, g.halfExtents().z); break;
+  }
+  const double k2 = g.inertia(1.0).y;
+  const double alpha = c.friction * s.settings.gravity * rho / k2;
+  return SpinLaw{rho, c.spin * std::abs(c.spin) / (2.0 * alpha)};
+}
+
 Scenario rideScene(const RideCase& c) {
   const double x0 = c.support == "table" ? -0.4 : 3.0;
   std::ostringstream text;

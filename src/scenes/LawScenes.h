@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -44,6 +45,24 @@ std::pair<double, double> pushStart(const PushCase& c);
 
 /// "cube 0.1 on the table, at 30 deg, 60 Hz".
 std::string describe(const PushCase& c);
+
+/// The spinning law's closed form for a case with a spin: a body standing
+/// on a face or its base is slowed by the friction of its contact points,
+/// mu m g at a distance rho from the axis (the corners of a box's face, the
+/// rim points of a cylinder's base), at alpha = mu g rho / k^2
+/// (k^2 = I / m about the vertical). It turns w0 |w0| / (2 alpha) and stops
+/// where it stands.
+///
+/// rho is the model's, not a pressed patch's: a uniformly pressed square
+/// face would resist at 0.383 of its edge (its area's mean distance from
+/// the centre), not 0.707, and turn 1.85 times as far
+/// (docs/bullet-corrections.md).
+struct SpinLaw {
+  double rho = 0;    ///< m
+  double angle = 0;  ///< rad, the turn
+};
+/// Nothing for a sphere, which has no face to stand on.
+std::optional<SpinLaw> spinLaw(const PushCase& c);
 
 /// A cube carrying a rider (a smaller cube, or any shape standing on its
 /// base), the cube pushed, the scene of the riding law: on the table (from

@@ -5,6 +5,9 @@
 
 #include "scenes/LawScenes.h"
 
+#include <cmath>
+#include <optional>
+
 #include <gtest/gtest.h>
 
 #include "core/Support.h"
@@ -41,6 +44,31 @@ TEST(LawScenes, HangsTheDroppedEntityAboveItsSupport) {
     EXPECT_NEAR(s.entities.back().position.y, top + 0.05 + kDropHeight, 1e-12) << support;
     EXPECT_TRUE(s.entities.back().on.isNone()) << support;
   }
+}
+
+// The spin law's closed forms worked by hand: a cube's corners at a / sqrt 2
+// with k^2 = a^2 / 6, a box's at half its diagonal with k^2 = (w^2 + d^2) / 12,
+// a cylinder's rim at r with k^2 = r^2 / 2; none for a sphere.
+TEST(LawScenes, GivesTheSpinLawsClosedForm) {
+  const double g = 9.81, mu = 0.3, w0 = -4.0;
+  const struct {
+    const char* shape;
+    const char* size;
+    double rho, k2;
+  } shapes[] = {{"cube", "0.2", 0.1 * std::sqrt(2.0), 0.04 / 6.0},
+                {"box", "[0.3, 0.1, 0.1]", std::hypot(0.15, 0.05), (0.09 + 0.01) / 12.0},
+                {"cylinder", "[0.06, 0.06, 0.2]", 0.06, 0.0036 / 2.0}};
+  for (const auto& s : shapes) {
+    PushCase c{s.shape, s.size, "table", 0.0, 60.0, mu};
+    c.spin = w0;
+    const std::optional<SpinLaw> law = spinLaw(c);
+    ASSERT_TRUE(law) << s.shape;
+    EXPECT_NEAR(law->rho, s.rho, 1e-12) << s.shape;
+    EXPECT_NEAR(law->angle, -w0 * w0 / (2.0 * mu * g * s.rho / s.k2), 1e-12) << s.shape;
+  }
+  PushCase ball{"sphere", "0.05", "table", 0.0, 60.0, mu};
+  ball.spin = w0;
+  EXPECT_FALSE(spinLaw(ball));
 }
 
 }  // namespace
