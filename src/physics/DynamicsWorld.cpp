@@ -98,6 +98,7 @@ void DynamicsWorld::shortenPart(double length) {
   // The rolling resistance was given for the whole part: the rest goes back.
   for (const auto& [body, impulse] : resisted_) body->applyTorqueImpulse(-impulse * (1.0 - ratio));
   for (auto& resisted : resisted_) resisted.second *= ratio;
+  for (ResistedSlip& slip : resistedSlips_) slip.friction *= ratio;
   scaleCarriedImpulses(ratio);
   partLength_ = length;
 }
@@ -165,9 +166,17 @@ void DynamicsWorld::integrateTransforms(btScalar) {
     btVector3 mean = change;
     const auto slip = slips_.find(body);
     if (slip != slips_.end() && slip->second.stop.share < 1.0) {
-      const btVector3& n = slip->second.stop.normal;
-      const btVector3 across = change - n * change.dot(n);
-      mean = change - across * (1.0 - slip->second.stop.share);
+      const BodySlip& s = slip->second;
+      const btVector3& n = s.stop.normal;
+      btVector3 across = change - n * change.dot(n);
+      // After the stop, only the friction that takes back the rolling
+      // resistance's slip changes the velocity, evenly to the part's end.
+      const btScalar size = across.length();
+      if (s.stopTaken > 0 && size > 0) {
+        const double after = std::min<double>(size, s.stopTaken * (1.0 - s.stop.share) * body->getInvMass());
+        across -= across * (after / size);
+      }
+      mean = change - across * (1.0 - s.stop.share);
     }
     btTransform pose = body->getWorldTransform();
     // The same for the spin of a body slipping on a face, about its

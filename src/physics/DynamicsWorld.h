@@ -168,12 +168,15 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   // What a body's slips did in the last solve's part (findSlipStops, read
   // by integrateTransforms):
   // - stop: the first of its contacts whose slip friction stopped inside
-  //   the part (share below 1; 1: none stopped);
+  //   the part (share below 1; 1: none stopped), and the friction there
+  //   that took back its rolling resistance's slip (stopTaken, N s over
+  //   the part: after the stop, it is the friction that still acts);
   // - face: the face (three points or more carrying load) with the largest
   //   friction limit it slipped on (faceLimit, N s; 0: none), about whose
   //   normal only that friction turns the body.
   struct BodySlip {
     SlipStop stop;
+    double stopTaken = 0;
     SlipStop face;
     double faceLimit = 0;
   };
@@ -214,6 +217,16 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   };
   std::optional<SlipEnd> lastSlipEnd_;
   std::vector<std::pair<btRigidBody*, btVector3>> resisted_;  // the part's rolling-resistance impulses, N m s
+  // Each resisted contact's part (applyRollingResistance): the friction
+  // impulse that takes back the slip the resistance made (N s, over the
+  // whole part), and whether it slipped before the resistance acted.
+  struct ResistedSlip {
+    ContactKey contact;
+    double friction = 0;
+    bool slippedBefore = false;
+  };
+  std::vector<ResistedSlip> resistedSlips_;
+  const ResistedSlip* resistedSlip(const ContactKey& key) const;  // the contact's, or null
   ContactIslands islands_;   // replaces the island manager Bullet made
   IslandSolver* islandSolver_;  // the constraint solver, if tabletop's (else null)
 };

@@ -12,6 +12,9 @@ namespace tabletop {
 
 namespace {
 
+// A slip slower than this before the resistance acted is rounding, m/s.
+constexpr double kSlipBefore = 1e-9;
+
 // The largest angular impulse about `axis` through `contact` that does not
 // reverse a body turning at `rate` about it: (I + m d^2) rate, with d the
 // distance from the centre of mass to the axis (0 about the normal).
@@ -39,6 +42,13 @@ double pressingWeight(const btRigidBody& a, const btRigidBody& b, const btVector
   return std::max(0.0, -down * massA) + std::max(0.0, down * massB);
 }
 
+// The slip of `a` on `b` at `point`, across `normal`, m/s.
+btVector3 slipAcross(const btRigidBody& a, const btRigidBody& b, const btVector3& point, const btVector3& normal) {
+  const btVector3 slip = a.getVelocityInLocalPoint(point - a.getCenterOfMassPosition()) -
+                         b.getVelocityInLocalPoint(point - b.getCenterOfMassPosition());
+  return slip - normal * normal.dot(slip);
+}
+
 // The relative spin of `a` and `b` once the kinetic friction of this step
 // (an impulse up to `friction`, N s, against the slip at `point`) has acted:
 // a sphere pushed through its centre starts with no spin, but its slip
@@ -49,8 +59,7 @@ btVector3 spinAfterSlip(const btRigidBody& a, const btRigidBody& b, const btVect
                         double friction) {
   const btVector3 armA = point - a.getCenterOfMassPosition();
   const btVector3 armB = point - b.getCenterOfMassPosition();
-  const btVector3 slip = a.getVelocityInLocalPoint(armA) - b.getVelocityInLocalPoint(armB);
-  const btVector3 across = slip - normal * normal.dot(slip);
+  const btVector3 across = slipAcross(a, b, point, normal);
   const btVector3 spin = a.getAngularVelocity() - b.getAngularVelocity();
   const btScalar speed = across.length();
   if (speed < SIMD_EPSILON || friction <= 0) return spin;
@@ -72,6 +81,7 @@ btVector3 spinAfterSlip(const btRigidBody& a, const btRigidBody& b, const btVect
 // that it at most stops the motion.
 void DynamicsWorld::applyRollingResistance() {
   resisted_.clear();
+  resistedSlips_.clear();
   btDispatcher* dispatcher = getDispatcher();
   for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
     btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
@@ -101,6 +111,7 @@ void DynamicsWorld::applyRollingResistance() {
 
     const btVector3 spinning = normal * normal.dot(a->getAngularVelocity() - b->getAngularVelocity());
     const btVector3 spin = spinAfterSlip(*a, *b, point, normal, contact.friction * normalImpulse);
+    const btVector3 slipBefore = slipAcross(*a, *b, point, normal);
     const struct {
       btVector3 part;
       double coefficient;
@@ -122,6 +133,17 @@ void DynamicsWorld::applyRollingResistance() {
       if (a->getInvMass() != 0) a->applyTorqueImpulse(-axis * impulse), resisted_.emplace_back(a, -axis * impulse);
       if (b->getInvMass() != 0) b->applyTorqueImpulse(axis * impulse), resisted_.emplace_back(b, axis * impulse);
     }
+    // The slip the resistance made is its own: the friction that takes it
+    // back is not a slip's (findSlipStops). A slip before it acted (a
+    // push's) is the contact's (slidIn).
+    const btVector3 made = slipAcross(*a, *b, point, normal) - slipBefore;
+    const btScalar madeSpeed = made.length();
+    double friction = 0;
+    if (madeSpeed > SIMD_EPSILON) {
+      const btVector3 along = made / madeSpeed;
+      friction = madeSpeed / (a->computeImpulseDenominator(point, along) + b->computeImpulseDenominator(point, along));
+    }
+    resistedSlips_.push_back({contactOf(*manifold), friction, slipBefore.length() > kSlipBefore});
   }
 }
 

@@ -57,8 +57,16 @@ bool DynamicsWorld::slidIn(const ContactKey& key) const {
   const auto resisted = [&](const btCollisionObject* body) {
     return std::any_of(resisted_.begin(), resisted_.end(), [&](const auto& r) { return r.first == body; });
   };
-  return (kicked_.contains(key.first) || kicked_.contains(key.second)) && !resisted(key.first) &&
-         !resisted(key.second);
+  if (!kicked_.contains(key.first) && !kicked_.contains(key.second)) return false;
+  if (!resisted(key.first) && !resisted(key.second)) return true;
+  const ResistedSlip* slip = resistedSlip(key);
+  return slip != nullptr && slip->slippedBefore;
+}
+
+const DynamicsWorld::ResistedSlip* DynamicsWorld::resistedSlip(const ContactKey& key) const {
+  const auto at = std::find_if(resistedSlips_.begin(), resistedSlips_.end(),
+                               [&](const ResistedSlip& slip) { return slip.contact == key; });
+  return at == resistedSlips_.end() ? nullptr : &*at;
 }
 
 // Which contacts slid through this part, and which stopped in it: a body
@@ -102,7 +110,13 @@ void DynamicsWorld::findSlipStops(const std::vector<Slip>& slipping) {
     if (through) sliding.push_back(key);  // in order and once each, as `used` is
     const bool slidBefore = slid(sliding_, key) || slidIn(key);
     if (!through && !slidBefore) continue;
-    const double share = through ? 1.0 : u.friction / u.limit;
+    // The friction that took back the rolling resistance's own slip is
+    // not the slip's (below the limit: the slip stopped, so it is).
+    double share = 1.0, taken = 0.0;
+    if (!through) {
+      if (const ResistedSlip* resisted = resistedSlip(key)) taken = std::min(resisted->friction, u.friction);
+      share = (u.friction - taken) / (u.limit - taken);
+    }
     for (const btCollisionObject* body : {u.manifold->getBody0(), u.manifold->getBody1()}) {
       if (body->isStaticOrKinematicObject()) continue;
       const bool face = u.loaded >= 3 && slidBefore;
@@ -112,7 +126,10 @@ void DynamicsWorld::findSlipStops(const std::vector<Slip>& slipping) {
         slip.face = {share, u.normal.normalized()};
         slip.faceLimit = u.limit;
       }
-      if (!through && share < slip.stop.share) slip.stop = {share, u.normal.normalized()};
+      if (!through && share < slip.stop.share) {
+        slip.stop = {share, u.normal.normalized()};
+        slip.stopTaken = taken;
+      }
     }
   }
   std::swap(sliding_, slidingNext_);
