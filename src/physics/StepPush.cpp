@@ -1,6 +1,7 @@
 #include "physics/StepPush.h"
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -38,10 +39,12 @@ double stepLaunchSpeed(const Shape& shape, double step, const Material& contact,
   const double r = static_cast<const Sphere&>(shape).radius();
   const double rf = contact.rollingFriction;
   if (!(rf > 0.0) || !(rf < mu * r)) {
-    throw std::invalid_argument(
-        "sphere '" + shape.name() +
-        "' needs rolling friction between 0 and friction * radius for a push by step (got " +
-        std::to_string(rf) + " m)");
+    // A ball with no rolling friction rolls on for ever; one with more
+    // than mu r never rolls and is not the ball of the closed form.
+    std::ostringstream why;
+    why << "sphere '" << shape.name() << "' needs a rolling friction above 0 and below friction * radius ("
+        << mu * r << " m) for a push by step, got " << rf << " m; push it by 'impulse' instead";
+    throw std::invalid_argument(why.str());
   }
   return std::sqrt(step / rollingDistance(1.0, mu, rf, r, gravity));
 }
