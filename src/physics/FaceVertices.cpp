@@ -50,8 +50,11 @@ void FaceVertices::processCollision(const btCollisionObjectWrapper* body0, const
   const bool firstFaced = rank0 >= rank1;
   const btCollisionObjectWrapper* faced = firstFaced ? body0 : body1;
   const btCollisionObjectWrapper* other = firstFaced ? body1 : body0;
+  // The other way round only for a body that can move: the table's top
+  // never rests on a solid's face.
+  const bool otherWay = std::min(rank0, rank1) > 0 && !faced->getCollisionObject()->isStaticOrKinematicObject();
   if (touchFace(faced, other, firstFaced, info.m_timeStep, result) ||
-      (std::min(rank0, rank1) > 0 && touchFace(other, faced, !firstFaced, info.m_timeStep, result))) {
+      (otherWay && touchFace(other, faced, !firstFaced, info.m_timeStep, result))) {
     clearOtherwise();
     return;
   }
@@ -129,6 +132,7 @@ FaceVertices::Face FaceVertices::outerFace(const btCollisionObjectWrapper* boxWr
   face.round = shape.round;
   face.half = shape.half;
   face.radius = shape.radius[end];
+  face.thickness = shape.out(face.axis, 0) + shape.out(face.axis, 1);
   const btScalar offset = face.normal.dot(boxPose.getOrigin()) + shape.out(face.axis, end);
   if (face.normal.dot(solidPose.getOrigin()) <= offset) return face;  // its centre is not out over the face
   nearCorners(*solid, solidPose, face.normal, offset, manifold_->getContactBreakingThreshold(),
@@ -209,8 +213,10 @@ bool FaceVertices::touchFace(const btCollisionObjectWrapper* boxWrap, const btCo
                              bool boxFirst, btScalar timeStep, btManifoldResult* result) {
   const Face face = outerFace(boxWrap, solidWrap, timeStep);
   if (!face.out) return false;
+  // A corner deeper in than the body behind the face is not in it at
+  // all: the solid does not rest on this face.
   for (const NearCorner& c : near_) {
-    if (!overFace(boxWrap, face, c)) return false;
+    if (!overFace(boxWrap, face, c) || c.distance < -face.thickness) return false;
   }
   result->setPersistentManifold(manifold_);
   const int solidBody = boxFirst ? 1 : 0;

@@ -64,6 +64,7 @@ class FaceVertices : public btActivatingCollisionAlgorithm {
     bool round = false;    // a disc (a cylinder's or a cone's end), not a box's rectangle
     btVector3 half;        // a box's half extents, margin included
     btScalar radius = 0;   // a disc's
+    btScalar thickness = 0;  // how far the body reaches behind the face, m
   };
   // The faces a shape has: a box's six, a standing cylinder's two ends,
   // and a truncated cone's two ends (the discs inscribed in its hull's
