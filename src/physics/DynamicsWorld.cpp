@@ -290,6 +290,7 @@ void DynamicsWorld::noteSolved(const ClosingPoints& closing, const std::vector<S
     stopped_.insert(manifold->getBody0());
     stopped_.insert(manifold->getBody1());
   }
+  if (!stopped_.empty()) spreadStops();
   findSlipStops(slipping);
 }
 

@@ -160,6 +160,9 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   PointBoxes pointBoxes_;  // the boxes the part's points lie on (FaceEdges)
   ImpactScan::Storage impactStorage_;  // the part's ImpactScan's
   BodySet stopped_;  // bodies a closing point stopped in the last solve
+  // Adds to stopped_ the bodies resting on them whose touching points'
+  // normal velocity the stop changed at once.
+  void spreadStops();
   // A slip's share of the part (slipped for) and its contacts' normal, unit.
   struct SlipStop {
     double share = 1.0;

@@ -263,4 +263,46 @@ void DynamicsWorld::forgetImpacts() {
   }
 }
 
+// A body resting on one that an impact stops is stopped with it where the
+// velocity of their touching, loaded points changed at once along the
+// normal. Moved by the mean of its start and end velocities, a cylinder
+// resting on a box whose raised side struck the table went on at its start
+// speed for half the part and sank 0.5 mm into the box at 60 Hz. A body the
+// struck one only drags along by friction changes smoothly and keeps the
+// mean. At most one pass per manifold.
+void DynamicsWorld::spreadStops() {
+  btDispatcher* dispatcher = getDispatcher();
+  const int numManifolds = dispatcher->getNumManifolds();
+  if (startVelocities_.size() != static_cast<std::size_t>(m_nonStaticRigidBodies.size())) return;
+  const auto jumps = [&](const btCollisionObject* object, const btManifoldPoint& point) {
+    const int i = m_nonStaticRigidBodies.findLinearSearch(btRigidBody::upcast(const_cast<btCollisionObject*>(object)));
+    if (i >= m_nonStaticRigidBodies.size()) return false;
+    const btRigidBody& body = *m_nonStaticRigidBodies[i];
+    const auto s = static_cast<std::size_t>(i);
+    const btVector3 lever = point.getPositionWorldOnB() - body.getCenterOfMassPosition();
+    const btVector3 change = body.getLinearVelocity() - startVelocities_[s] +
+                             (body.getAngularVelocity() - startSpins_[s]).cross(lever);
+    return std::abs(change.dot(point.m_normalWorldOnB)) > stopSpeed();
+  };
+  for (int pass = 0; pass < numManifolds; ++pass) {
+    bool grew = false;
+    for (int m = 0; m < numManifolds; ++m) {
+      const btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
+      const bool hasA = stopped_.contains(manifold->getBody0()), hasB = stopped_.contains(manifold->getBody1());
+      if (hasA == hasB) continue;
+      const btCollisionObject* other = hasA ? manifold->getBody1() : manifold->getBody0();
+      if (other->isStaticOrKinematicObject()) continue;
+      for (int p = 0; p < manifold->getNumContacts(); ++p) {
+        const btManifoldPoint& point = manifold->getContactPoint(p);
+        if (point.getDistance() <= kLoadTouching && point.getAppliedImpulse() > 0 && jumps(other, point)) {
+          stopped_.insert(other);
+          grew = true;
+          break;
+        }
+      }
+    }
+    if (!grew) return;
+  }
+}
+
 }  // namespace tabletop

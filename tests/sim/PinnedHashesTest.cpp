@@ -55,7 +55,7 @@ INSTANTIATE_TEST_SUITE_P(
                       Pinned{"example2_two_cubes", SimulationMode::Bullet, "acbda1c4f8c99243"},
                       Pinned{"example2_two_cubes", SimulationMode::Compat, "ebbd65c2f6debe9b"},
                       Pinned{"example2_two_cubes", SimulationMode::Rules, "ac763547cc1d6a3d"},
-                      Pinned{"example3_stacked_cubes", SimulationMode::Bullet, "11c23305e7a85cce"},
+                      Pinned{"example3_stacked_cubes", SimulationMode::Bullet, "e6390c9788e7cd75"},
                       Pinned{"example3_stacked_cubes", SimulationMode::Compat, "1935dd9b39a34a88"},
                       Pinned{"example3_stacked_cubes", SimulationMode::Rules, "063bc435ac222aa8"},
                       Pinned{"example4_two_spheres", SimulationMode::Bullet, "1d337dada37c9116"},
