@@ -21,7 +21,6 @@ scene (every step and the script around it), and Bullet's own default
 pipeline stepping the same scene for as long.
 """
 import json
-import re
 import subprocess
 import sys
 import tempfile
@@ -31,30 +30,27 @@ ROOT = Path(__file__).resolve().parent.parent
 RATE = 60.0
 
 
-def instructions(tabletop, scene):
-    """Instructions callgrind counts inside btDiscreteDynamicsWorld::stepSimulation for one run."""
-    result = subprocess.run(
-        ["valgrind", "--tool=callgrind", "--callgrind-out-file=/dev/null",
-         "--toggle-collect=btDiscreteDynamicsWorld::stepSimulation*",
-         str(tabletop), "run", str(scene), "--timestep", repr(1.0 / RATE)],
-        capture_output=True, text=True, check=True)
-    found = re.search(r"Collected : (\d+)", result.stderr)
-    if not found:
-        sys.exit(f"no count from callgrind for {scene}:\n{result.stderr}")
-    return int(found.group(1))
-
-
-def counted(tabletop, scene, toggle, folder):
-    """Callgrind's profile of `bench --baseline` on one scene at 60 Hz, collected inside `toggle`."""
+def profile(command, toggle, folder):
+    """Callgrind's inclusive listing of `command`, collected inside `toggle` only."""
     out = Path(folder) / "callgrind.out"
-    subprocess.run(
-        ["valgrind", "--tool=callgrind", f"--callgrind-out-file={out}", f"--toggle-collect={toggle}",
-         str(tabletop), "bench", "--baseline", "--rates", repr(RATE), "--repeats", "1", "--cases", scene.stem,
-         "--scenarios", str(scene.parent.parent)],
-        capture_output=True, text=True, check=True)
+    subprocess.run(["valgrind", "--tool=callgrind", f"--callgrind-out-file={out}", f"--toggle-collect={toggle}"] +
+                   [str(part) for part in command], capture_output=True, text=True, check=True)
     result = subprocess.run(["callgrind_annotate", "--inclusive=yes", str(out)],
                             capture_output=True, text=True, check=True)
     return result.stdout
+
+
+def instructions(tabletop, scene, folder):
+    """Instructions inside btDiscreteDynamicsWorld::stepSimulation for one run of `scene` at RATE."""
+    listing = profile([tabletop, "run", scene, "--timestep", repr(1.0 / RATE)],
+                      "btDiscreteDynamicsWorld::stepSimulation*", folder)
+    return inclusive(listing, "PROGRAM TOTALS")
+
+
+def counted(tabletop, scene, toggle, folder):
+    """Callgrind's listing of `bench --baseline` on one scene at RATE, collected inside `toggle`."""
+    return profile([tabletop, "bench", "--baseline", "--rates", repr(RATE), "--repeats", "1", "--cases", scene.stem,
+                    "--scenarios", scene.parent.parent], toggle, folder)
 
 
 def inclusive(profile, function):
@@ -109,9 +105,9 @@ def main():
     print("|---|---|---|---|")
     with tempfile.TemporaryDirectory() as folder:
         for scene in sorted((ROOT / "scenarios" / "analytic").glob("*.json")):
-            before = instructions(old, scene)
-            swept = instructions(new, with_sweeps(scene, folder))
-            default = instructions(new, scene)
+            before = instructions(old, scene, folder)
+            swept = instructions(new, with_sweeps(scene, folder), folder)
+            default = instructions(new, scene, folder)
             print(f"| `{scene.stem}` | {millions(before)} | {millions(swept)} ({swept / before:.2f}x) | "
                   f"{millions(default)} ({default / before:.2f}x) |")
 
