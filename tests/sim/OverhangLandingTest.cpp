@@ -23,11 +23,8 @@
 #include <gtest/gtest.h>
 
 #include "core/ShapeGeometry.h"
-#include "core/Simulation.h"
-#include "measure/StabilityProbe.h"
-#include "physics/Impacts.h"
-#include "physics/World.h"
 #include "scenario/ScenarioLoader.h"
+#include "support/DeepestOverlap.h"
 
 namespace tabletop {
 namespace {
@@ -94,19 +91,11 @@ class OverhangLanding : public testing::TestWithParam<Landing> {};
 TEST_P(OverhangLanding, LandsWithoutSinkingOrGainingEnergy) {
   const Landing c = GetParam();
   const Scenario s = landingScene(c);
-  double deepest = 0.0, deepestAt = 0.0;
-  const StabilityReport r = probeStability(s, s.settings, [&](const Simulation& sim) {
-    const auto& world = dynamic_cast<const World&>(sim);
-    const Shape& box = *world.entities().at(0);
-    const Shape& solid = *world.entities().at(1);
-    const btPointCollector closest =
-        closestPoints(static_cast<const btConvexShape&>(solid.collisionShape()), solid.body()->getWorldTransform(),
-                      static_cast<const btConvexShape&>(box.collisionShape()), box.body()->getWorldTransform());
-    if (closest.m_hasResult && -closest.m_distance > deepest) deepest = -closest.m_distance, deepestAt = sim.time();
-  });
+  const test::Overlap o = test::deepestOverlap(s, 1, 0);  // the solid into the box
+  const StabilityReport& r = o.report;
   ASSERT_TRUE(r.complete) << describe(c) << ": " << r.failure;
-  EXPECT_LE(deepest, depthTolerance(c.rate)) << describe(c) << ": " << deepest * 1e3 << " mm deep at t = " << deepestAt
-                                             << " s";
+  EXPECT_LE(o.deepest, depthTolerance(c.rate))
+      << describe(c) << ": " << o.deepest * 1e3 << " mm deep at t = " << o.at << " s";
   // No pushes: the excess is over the energy at the start.
   EXPECT_LE(r.energyExcess, kEnergyTolerance * r.energyScale)
       << describe(c) << ": gained " << r.energyExcess << " J of " << r.energyScale << " J";

@@ -23,11 +23,8 @@
 #include <gtest/gtest.h>
 
 #include "core/ShapeGeometry.h"
-#include "core/Simulation.h"
-#include "measure/StabilityProbe.h"
-#include "physics/Impacts.h"
-#include "physics/World.h"
 #include "scenario/ScenarioLoader.h"
+#include "support/DeepestOverlap.h"
 
 namespace tabletop {
 namespace {
@@ -72,19 +69,9 @@ class StackLanding : public testing::TestWithParam<Drop> {};
 TEST_P(StackLanding, TheRiderStopsWithItsBase) {
   const Drop c = GetParam();
   const Scenario s = dropScene(c);
-  double deepest = 0.0, deepestAt = 0.0;
-  const StabilityReport r = probeStability(s, s.settings, [&](const Simulation& sim) {
-    const auto& world = dynamic_cast<const World&>(sim);
-    const Shape& base = *world.entities().at(0);
-    const Shape& rider = *world.entities().at(1);
-    const btPointCollector closest =
-        closestPoints(static_cast<const btConvexShape&>(rider.collisionShape()), rider.body()->getWorldTransform(),
-                      static_cast<const btConvexShape&>(base.collisionShape()), base.body()->getWorldTransform());
-    if (closest.m_hasResult && -closest.m_distance > deepest) deepest = -closest.m_distance, deepestAt = sim.time();
-  });
-  ASSERT_TRUE(r.complete) << describe(c) << ": " << r.failure;
-  EXPECT_LE(deepest, kDepthTolerance) << describe(c) << ": " << deepest * 1e3 << " mm deep at t = " << deepestAt
-                                      << " s";
+  const test::Overlap o = test::deepestOverlap(s, 1, 0);  // the rider into its base
+  ASSERT_TRUE(o.report.complete) << describe(c) << ": " << o.report.failure;
+  EXPECT_LE(o.deepest, kDepthTolerance) << describe(c) << ": " << o.deepest * 1e3 << " mm deep at t = " << o.at << " s";
 }
 
 std::vector<Drop> cases() {
