@@ -275,8 +275,9 @@ void DynamicsWorld::spreadStops() {
   const int numManifolds = dispatcher->getNumManifolds();
   if (startVelocities_.size() != static_cast<std::size_t>(m_nonStaticRigidBodies.size())) return;
   const auto jumps = [&](const btCollisionObject* object, const btManifoldPoint& point) {
-    const int i = m_nonStaticRigidBodies.findLinearSearch(btRigidBody::upcast(const_cast<btCollisionObject*>(object)));
-    if (i >= m_nonStaticRigidBodies.size()) return false;
+    int i = 0;
+    while (i < m_nonStaticRigidBodies.size() && m_nonStaticRigidBodies[i] != object) ++i;
+    if (i == m_nonStaticRigidBodies.size()) return false;
     const btRigidBody& body = *m_nonStaticRigidBodies[i];
     const auto s = static_cast<std::size_t>(i);
     const btVector3 lever = point.getPositionWorldOnB() - body.getCenterOfMassPosition();
