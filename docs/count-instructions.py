@@ -53,11 +53,16 @@ def counted(tabletop, scene, toggle, folder):
                     "--scenarios", scene.parent.parent], toggle, folder)
 
 
-def inclusive(profile, function):
-    """The inclusive count of `function` in a callgrind_annotate listing (0 if absent)."""
+def inclusive(profile, function, required=True):
+    """The inclusive count of `function` in a callgrind_annotate listing.
+
+    A missing total means callgrind counted nothing, which is an error; a missing function may be
+    one that never ran (0), which callers allow with required=False."""
     for line in profile.splitlines():
         if function in line:
             return int(line.split()[0].replace(",", ""))
+    if required:
+        sys.exit(f"count-instructions: callgrind's listing has no line for {function}")
     return 0
 
 
@@ -65,7 +70,7 @@ def against_bullet(tabletop, scene, folder):
     """Instructions of tabletop's runs of `scene` and of Bullet's own runs of it, in one `bench --baseline`."""
     own = counted(tabletop, scene, "tabletop::runScript*", folder)
     runs = inclusive(own, "PROGRAM TOTALS")
-    steps_in_runs = inclusive(own, "btDiscreteDynamicsWorld::stepSimulation")
+    steps_in_runs = inclusive(own, "btDiscreteDynamicsWorld::stepSimulation", required=False)
     both = inclusive(counted(tabletop, scene, "btDiscreteDynamicsWorld::stepSimulation*", folder), "PROGRAM TOTALS")
     return runs, both - steps_in_runs
 

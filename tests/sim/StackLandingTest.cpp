@@ -83,7 +83,8 @@ std::vector<Drop> cases() {
   const Rider riders[] = {{"cube", "0.05", 0.025},
                           {"box", "[0.08, 0.03, 0.06]", 0.015},
                           {"cylinder", "[0.03, 0.03, 0.05]", 0.025},
-                          {"cylinder", "[0.03, 0.02, 0.05]", ShapeGeometry::cylinder(0.03, 0.02, 0.05).centroidHeight()}};
+                          {"cylinder", "[0.03, 0.02, 0.05]",
+                           ShapeGeometry::cylinder(0.03, 0.02, 0.05).centroidHeight()}};
   std::vector<Drop> all;
   for (const Rider& rider : riders) {
     for (const bool floor : {false, true}) {
