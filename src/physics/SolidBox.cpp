@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include <BulletCollision/CollisionShapes/btConvexPolyhedron.h>
+
 #include "core/ShapeGeometry.h"
 #include "physics/CollisionMargin.h"
 
@@ -16,11 +18,33 @@ namespace {
 std::unique_ptr<btCollisionShape> makeBox(const btVector3& half, double margin) {
   auto box = std::make_unique<btBoxShape>(half);
   box->setMargin(margin);
-  box->initializePolyhedralFeatures();
+  initializeExactBoxFeatures(*box);
   return box;
 }
 
 }  // namespace
+
+void initializeExactBoxFeatures(btBoxShape& box) {
+  box.initializePolyhedralFeatures();
+  btConvexPolyhedron exact = *box.getConvexPolyhedron();
+  const btVector3 half = box.getHalfExtentsWithMargin();
+  // Each corner is at +-half on every axis, each face's normal on one axis
+  // at half from the centre: Bullet's hull has them within a fraction of
+  // the size, so the nearest of those is the one meant.
+  for (int v = 0; v < exact.m_vertices.size(); ++v) {
+    for (int a = 0; a < 3; ++a) exact.m_vertices[v][a] = std::copysign(half[a], exact.m_vertices[v][a]);
+  }
+  for (int f = 0; f < exact.m_faces.size(); ++f) {
+    btScalar* plane = exact.m_faces[f].m_plane;
+    const int axis = btVector3(plane[0], plane[1], plane[2]).absolute().maxAxis();
+    const btScalar sign = plane[axis] > 0 ? 1 : -1;
+    for (int a = 0; a < 3; ++a) plane[a] = a == axis ? sign : 0;
+    plane[3] = -half[axis];
+  }
+  exact.m_uniqueEdges.clear();
+  exact.initialize();
+  box.setPolyhedralFeatures(exact);
+}
 
 SolidBox::SolidBox(std::string name, double width, double height, double depth)
     : Shape(std::move(name),

@@ -17,7 +17,7 @@ Table::Table(const TableSpec& spec, bool separateLegs) : spec_(spec) {
   const auto& topBox = static_cast<const btBoxShape&>(top_->collisionShape());
   auto top = std::make_unique<PaddedShape<btBoxShape>>(gContactBreakingThreshold, topBox.getHalfExtentsWithMargin());
   top->setMargin(topBox.getMargin());
-  top->initializePolyhedralFeatures();
+  initializeExactBoxFeatures(*top);
   children_.push_back(std::move(top));
   for (const auto& leg : legs_) {
     const auto& cylinder = static_cast<const btCylinderShape&>(leg->collisionShape());
