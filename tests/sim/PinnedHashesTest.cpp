@@ -49,7 +49,7 @@ TEST_P(PinnedHash, IsUnchanged) {
 
 INSTANTIATE_TEST_SUITE_P(
     Shipped, PinnedHash,
-    ::testing::Values(Pinned{"example1_single_cube", SimulationMode::Bullet, "1b67a77d96a72951"},
+    ::testing::Values(Pinned{"example1_single_cube", SimulationMode::Bullet, "248b6b3a5d760de6"},
                       Pinned{"example1_single_cube", SimulationMode::Compat, "2df4b8d0f84aa683"},
                       Pinned{"example1_single_cube", SimulationMode::Rules, "81dc43ad5ef2421b"},
                       Pinned{"example2_two_cubes", SimulationMode::Bullet, "acbda1c4f8c99243"},
