@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <BulletCollision/CollisionShapes/btConvexPolyhedron.h>
+
 #include "core/Angle.h"
 #include "physics/Cube.h"
 #include "physics/Cylinder.h"
@@ -107,6 +109,34 @@ TEST(Shape, MarginScalesWithTheBody) {
 
 // A push on a box face meets the surface where the ray from the centre
 // leaves the box.
+// The faces a box's separating-axis test clips lie at its half extents,
+// to rounding, for every size: Bullet's own hull step left 28% of sizes
+// from 1 mm to 1 m small, a 46 mm cube's by 4.5 um (SolidBox.h).
+TEST(SolidBox, PolyhedronCornersAndFacesLieAtTheHalfExtents) {
+  for (int k = 1; k <= 400; ++k) {
+    const double width = 0.0025 * k;  // 2.5 mm to 1 m
+    const SolidBox box("b", width, 0.6 * width, 1.3 * width);
+    const auto& shape = static_cast<const btBoxShape&>(box.collisionShape());
+    const btConvexPolyhedron& polyhedron = *shape.getConvexPolyhedron();
+    const btVector3 half = box.halfExtents();
+    ASSERT_EQ(polyhedron.m_vertices.size(), 8) << width;
+    ASSERT_EQ(polyhedron.m_faces.size(), 6) << width;
+    for (int v = 0; v < polyhedron.m_vertices.size(); ++v) {
+      for (int a = 0; a < 3; ++a) {
+        EXPECT_NEAR(std::abs(polyhedron.m_vertices[v][a]), half[a], 1e-15) << width << " m, corner " << v;
+      }
+    }
+    for (int f = 0; f < polyhedron.m_faces.size(); ++f) {
+      const btScalar* plane = polyhedron.m_faces[f].m_plane;
+      const btVector3 normal(plane[0], plane[1], plane[2]);
+      const int axis = normal.absolute().maxAxis();
+      EXPECT_NEAR(normal.length(), 1.0, 1e-15) << width << " m, face " << f;
+      EXPECT_NEAR(std::abs(normal[axis]), 1.0, 1e-15) << width << " m, face " << f;
+      EXPECT_NEAR(-plane[3], half[axis], 1e-15) << width << " m, face " << f;
+    }
+  }
+}
+
 TEST(SolidBox, SurfaceDistanceAlongAHorizontalRay) {
   SolidBox box("B", 0.4, 0.1, 0.2);
   EXPECT_NEAR(box.surfaceDistance(btVector3(1, 0, 0)), 0.2, kRel * 0.2);
