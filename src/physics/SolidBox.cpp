@@ -25,9 +25,14 @@ std::unique_ptr<btCollisionShape> makeBox(const btVector3& half, double margin) 
 }  // namespace
 
 void initializeExactBoxFeatures(btBoxShape& box) {
-  box.initializePolyhedralFeatures();
-  btConvexPolyhedron exact = *box.getConvexPolyhedron();
+  // Bullet's hull is built on a box of the same size, which frees it:
+  // setting features over a shape's own leaks its faces' index arrays
+  // (btAlignedObjectArray copies faces over faces without destroying them).
   const btVector3 half = box.getHalfExtentsWithMargin();
+  btBoxShape scratch(half);
+  scratch.setMargin(box.getMargin());
+  scratch.initializePolyhedralFeatures();
+  btConvexPolyhedron exact = *scratch.getConvexPolyhedron();
   // Each corner is at +-half on every axis, each face's normal on one axis
   // at half from the centre: Bullet's hull has them within a fraction of
   // the size, so the nearest of those is the one meant.

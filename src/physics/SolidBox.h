@@ -32,6 +32,7 @@ class SolidBox : public Shape {
 /// 28% of box sizes from 1 mm to 1 m were off, by up to 2.5e-4 of the
 /// size. A cube seated on such a cube then read as 4.5 um above it, not
 /// touching, and fell freely for a step (5.4 mm at 30 Hz) into it.
+/// `box` must have no polyhedron yet.
 void initializeExactBoxFeatures(btBoxShape& box);
 
 }  // namespace tabletop
