@@ -107,8 +107,6 @@ TEST(Shape, MarginScalesWithTheBody) {
   EXPECT_NEAR(outer.x(), 0.01, kRel * 0.01);
 }
 
-// A push on a box face meets the surface where the ray from the centre
-// leaves the box.
 // The faces a box's separating-axis test clips lie at its half extents,
 // to rounding, for every size: Bullet's own hull step left 28% of sizes
 // from 1 mm to 1 m small, a 46 mm cube's by 4.5 um (SolidBox.h).
@@ -137,6 +135,8 @@ TEST(SolidBox, PolyhedronCornersAndFacesLieAtTheHalfExtents) {
   }
 }
 
+// A push on a box face meets the surface where the ray from the centre
+// leaves the box.
 TEST(SolidBox, SurfaceDistanceAlongAHorizontalRay) {
   SolidBox box("B", 0.4, 0.1, 0.2);
   EXPECT_NEAR(box.surfaceDistance(btVector3(1, 0, 0)), 0.2, kRel * 0.2);
