@@ -5,7 +5,7 @@
 #include <map>
 #include <stdexcept>
 
-#include "physics/ContactMaterial.h"
+#include "physics/contact/ContactMaterial.h"
 #include "sim/SceneBuilder.h"
 #include "sim/ScriptRunner.h"
 

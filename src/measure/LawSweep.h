@@ -9,7 +9,7 @@
 namespace tabletop {
 
 /// The laws every shape on every support must follow, each against its
-/// closed form computed here (bench --laws; tests/sim/SlideTest.cpp holds
+/// closed form computed here (bench --laws; tests/physics/laws/SlideTest.cpp holds
 /// the same laws to their tolerances):
 ///  - slide: a cube, a box, cylinders and a cone given v0 = 1.6 m/s
 ///    (mu 0.25) travel d = v0^2 / (2 mu g) without turning;
@@ -18,11 +18,11 @@ namespace tabletop {
 ///  - step: every shape pushed by a 0.2 m step travels it;
 ///  - spin: a cube, a box and cylinders spun about the vertical at 5 and
 ///    -12 rad/s turn w0^2 / (2 alpha) and stay where they stand
-///    (tests/sim/SpinTest.cpp); the error is how far the base's contact
+///    (tests/physics/laws/SpinTest.cpp); the error is how far the base's contact
 ///    points end from their closed-form place, or the drift if larger;
 ///  - bounce: a sphere, and every other shape landing flat, dropped 0.3 m
 ///    with e = 0, 0.5 and 0.9, follows free fall and its rebound at e
-///    times the impact speed (tests/sim/RestitutionTest.cpp).
+///    times the impact speed (tests/physics/laws/RestitutionTest.cpp).
 /// Each on the table, the floor and a slab resting on the floor, pushed at
 /// 0, 45, 77 and 200 degrees.
 struct LawPoint {

@@ -8,7 +8,7 @@
 #include <btBulletDynamicsCommon.h>
 
 #include "core/DirectionDef.h"
-#include "physics/Shape.h"
+#include "physics/shapes/Shape.h"
 #include "physics/World.h"
 #include "sim/SceneBuilder.h"
 

@@ -2,10 +2,10 @@
 
 #include <algorithm>
 
-#include "physics/ContactDispatcher.h"
-#include "physics/FaceVertices.h"
-#include "physics/IslandSolver.h"
-#include "physics/PlaneVertices.h"
+#include "physics/collision/ContactDispatcher.h"
+#include "physics/collision/SolidOnFaceAlgorithm.h"
+#include "physics/solver/IslandSolver.h"
+#include "physics/collision/SolidOnPlaneAlgorithm.h"
 
 namespace tabletop {
 namespace {
@@ -36,7 +36,7 @@ std::unique_ptr<btBroadphaseInterface> makeBroadphase(Broadphase kind, const Tab
 std::unique_ptr<btDefaultCollisionConfiguration> makeConfiguration() {
   btDefaultCollisionConstructionInfo info;
   info.m_customCollisionAlgorithmMaxElementSize =
-      static_cast<int>(std::max(sizeof(FaceVertices), sizeof(PlaneVertices)));
+      static_cast<int>(std::max(sizeof(SolidOnFaceAlgorithm), sizeof(SolidOnPlaneAlgorithm)));
   return std::make_unique<btDefaultCollisionConfiguration>(info);
 }
 

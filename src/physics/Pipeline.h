@@ -6,8 +6,8 @@
 
 #include "core/Settings.h"
 #include "core/TableSpec.h"
-#include "physics/DynamicsWorld.h"
-#include "physics/IslandSolver.h"
+#include "physics/step/DynamicsWorld.h"
+#include "physics/solver/IslandSolver.h"
 
 namespace tabletop {
 

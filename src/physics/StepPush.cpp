@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "physics/Sphere.h"
+#include "physics/shapes/Sphere.h"
 
 namespace tabletop {
 

@@ -5,8 +5,8 @@
 #include <stdexcept>
 
 #include "core/Angle.h"
-#include "physics/ContactMaterial.h"
-#include "physics/Reach.h"
+#include "physics/contact/ContactMaterial.h"
+#include "physics/collision/Reach.h"
 #include "physics/StepPush.h"
 
 namespace tabletop {
@@ -208,50 +208,6 @@ Support World::participant(int i) const {
   return Support::entity(entities_.at(static_cast<std::size_t>(i))->name());
 }
 
-std::vector<std::pair<Support, Support>> World::overlaps(double tolerance) {
-  addLegsIfReachable();
-  world_->performDiscreteCollisionDetection();
-  std::vector<std::pair<Support, Support>> found;
-  for (int m = 0; m < dispatcher_->getNumManifolds(); ++m) {
-    const btPersistentManifold* manifold = dispatcher_->getManifoldByIndexInternal(m);
-    for (int p = 0; p < manifold->getNumContacts(); ++p) {
-      if (manifold->getContactPoint(p).getDistance() < -tolerance) {
-        found.emplace_back(participant(manifold->getBody0()), participant(manifold->getBody1()));
-        break;
-      }
-    }
-  }
-  return found;
-}
-
-double World::deepestPenetration() const {
-  double deepest = 0.0;
-  for (int m = 0; m < dispatcher_->getNumManifolds(); ++m) {
-    const btPersistentManifold* manifold = dispatcher_->getManifoldByIndexInternal(m);
-    for (int p = 0; p < manifold->getNumContacts(); ++p) {
-      deepest = std::max(deepest, double(-manifold->getContactPoint(p).getDistance()));
-    }
-  }
-  return deepest;
-}
-
-std::vector<Vec3> World::contactPoints() const {
-  // A point counts while it is within Bullet's contact breaking threshold
-  // of touching; the point drawn is midway between the two surfaces.
-  constexpr double kShownWithin = 1e-3;  // metres
-  std::vector<Vec3> points;
-  for (int m = 0; m < dispatcher_->getNumManifolds(); ++m) {
-    const btPersistentManifold* manifold = dispatcher_->getManifoldByIndexInternal(m);
-    for (int p = 0; p < manifold->getNumContacts(); ++p) {
-      const btManifoldPoint& point = manifold->getContactPoint(p);
-      if (point.getDistance() > kShownWithin) continue;
-      const btVector3 mid = 0.5 * (point.getPositionWorldOnA() + point.getPositionWorldOnB());
-      points.push_back({mid.x(), mid.y(), mid.z()});
-    }
-  }
-  return points;
-}
-
 double World::pushImpulse(const Arrow& arrow, const PushMagnitude& magnitude) {
   Shape& shape = entity(arrow.entity);
   if (magnitude.kind == PushMagnitude::Kind::Impulse) return magnitude.value;
@@ -400,41 +356,6 @@ int World::substeps() const {
   // Written so that a non-finite speed (a diverging run, which the
   // divergence guard then stops) gives the cap, never a cast of NaN.
   return parts < settings_.maxSubsteps ? static_cast<int>(std::ceil(parts)) : settings_.maxSubsteps;
-}
-
-std::vector<BodyMotion> World::motions() const {
-  std::vector<BodyMotion> out;
-  out.reserve(entities_.size());
-  for (const auto& e : entities_) {
-    const btRigidBody* body = e->body();
-    const btQuaternion q = body->getWorldTransform().getRotation();
-    out.push_back({toVec3(body->getWorldTransform().getOrigin()),
-                   {q.w(), q.x(), q.y(), q.z()},
-                   toVec3(body->getLinearVelocity()),
-                   toVec3(body->getAngularVelocity())});
-  }
-  return out;
-}
-
-std::vector<EntityState> World::snapshot() const {
-  const std::vector<BodyMotion> moving = motions();
-  std::vector<EntityState> states;
-  states.reserve(entities_.size());
-  for (std::size_t i = 0; i < entities_.size(); ++i) {
-    const Shape& e = *entities_[i];
-    EntityState s;
-    s.name = e.name();
-    s.shape = e.kind();
-    s.position = moving[i].position;
-    s.orientation = moving[i].orientation;
-    s.yawDegrees = e.yawDegrees();
-    s.linearVelocity = moving[i].linearVelocity;
-    s.angularVelocity = moving[i].angularVelocity;
-    s.status = e.status();
-    s.support = e.support();
-    states.push_back(s);
-  }
-  return states;
 }
 
 }  // namespace tabletop

@@ -13,11 +13,11 @@
 #include "core/Settings.h"
 #include "core/Simulation.h"
 #include "core/TableSpec.h"
-#include "physics/DynamicsWorld.h"
-#include "physics/Ground.h"
+#include "physics/step/DynamicsWorld.h"
+#include "physics/shapes/Ground.h"
 #include "physics/Pipeline.h"
-#include "physics/Shape.h"
-#include "physics/Table.h"
+#include "physics/shapes/Shape.h"
+#include "physics/shapes/Table.h"
 
 namespace tabletop {
 
@@ -123,7 +123,15 @@ class World : public Simulation {
   void start();
   void updateSmoothAcceleration();
   void addLegsIfReachable();
+  // The observer (WorldObserver.cpp), after each step: the contacts, the
+  // pairs touching, each entity's support, edge and rest.
   void observe(bool emit);
+  void gatherContacts();
+  void observeTouching(bool emit);
+  void findSupports();
+  void observeSupport(std::size_t i, bool emit);
+  void observeEdge(std::size_t i, bool emit);
+  void observeRest(std::size_t i, bool emit);
   /// When, inside the step just taken, entity `shape` falling freely from
   /// its start (tracker) reached the height at which it rests flat on
   /// `support` (a user index): a landing's own time, not the step's end.

@@ -68,12 +68,25 @@ std::optional<double> World::firstStruck(int entity, int other) const {
   return first;
 }
 
+// Reads the contact manifolds and every entity's motion after a step, and
+// records what changed. With `emit` false (the initial state) it only sets
+// the state. Each entity's support, edge and rest are judged in turn, so
+// events of one time keep the entities' order.
 void World::observe(bool emit) {
-  const std::size_t n = entities_.size();
+  gatherContacts();
+  observeTouching(emit);
+  findSupports();
+  for (std::size_t i = 0; i < entities_.size(); ++i) {
+    observeSupport(i, emit);
+    observeEdge(i, emit);
+    observeRest(i, emit);
+  }
+}
 
-  // Contacts, one entry per (entity, other body) pair and side: how close
-  // they are, and how hard the other pushes the entity up. Entries are
-  // merged by sorting, in a buffer kept from step to step.
+// Contacts, one entry per (entity, other body) pair and side: how close
+// they are, and how hard the other pushes the entity up. Entries are
+// merged by sorting, in a buffer kept from step to step.
+void World::gatherContacts() {
   contacts_.clear();
   for (int m = 0; m < dispatcher_->getNumManifolds(); ++m) {
     const btPersistentManifold* manifold = dispatcher_->getManifoldByIndexInternal(m);
@@ -125,7 +138,11 @@ void World::observe(bool emit) {
     }
   }
   contacts_.resize(merged);
+}
 
+// Which entity pairs touch: a pair starts touching within kTouchDistance and
+// parts only beyond kApartDistance; a pair that starts is an event.
+void World::observeTouching(bool emit) {
   // contacts_ is sorted by entity and other, so the pairs come in order.
   std::vector<std::pair<int, int>>& touching = touchingNow_;
   touching.clear();
@@ -146,10 +163,13 @@ void World::observe(bool emit) {
     }
   }
   touching_.swap(touching);
+}
 
-  // Support: the body pushing each entity up hardest (ties: the lower
-  // index, the table and ground first), or the one before while it still
-  // pushes with kKeepSupportShare of that.
+// Support: the body pushing each entity up hardest (ties: the lower
+// index, the table and ground first), or the one before while it still
+// pushes with kKeepSupportShare of that.
+void World::findSupports() {
+  const std::size_t n = entities_.size();
   std::vector<int>& support = supports_;
   std::vector<double>& strongest = strongest_;
   std::vector<double>& current = currentPush_;
@@ -166,74 +186,162 @@ void World::observe(bool emit) {
   for (std::size_t i = 0; i < n; ++i) {
     if (current[i] >= 0 && current[i] >= kKeepSupportShare * strongest[i]) support[i] = trackers_[i].support;
   }
+}
 
-  for (std::size_t i = 0; i < n; ++i) {
-    Shape& shape = *entities_[i];
-    Tracker& tracker = trackers_[i];
-
-    // A support after none that is not the last one means the entity
-    // landed. A body that moves from one support to another without
-    // leaving them (a cube that lands across two, the first to touch it
-    // carrying nothing, the other all of its weight) has not.
-    if (support[i] != tracker.support) {
-      const bool airborne = tracker.support == kNoSupport;
-      tracker.support = support[i];
-      shape.setSupport(support[i] == kNoSupport ? Support() : participant(support[i]));
-      if (support[i] != kNoSupport) {
-        if (emit && airborne && support[i] != tracker.lastSupport) {
-          Event e;
-          e.t = landingTime(tracker, shape, support[i]);
-          e.type = EventType::Lands;
-          e.entity = shape.name();
-          e.on = shape.support();
-          record(e);
-        }
-        tracker.lastSupport = support[i];
-      }
-    }
-
-    // Report 3.4: the centre passing an edge starts the drop, at the time
-    // inside the step at which it passed.
-    if (shape.checkBoundary(table_) && emit) {
-      const double dt = settings_.timestep;
-      Event e;
-      e.t = time_ - dt + dt * edgeCrossing(toVec3(tracker.lastCentre), toVec3(tracker.lastVelocity), toVec3(shape.position()), dt,
-                                           shape.status(), table_.edges());
-      e.type = EventType::LeavesTable;
-      e.entity = shape.name();
-      e.edge = dropEdge(shape.status());
-      record(e);
-    }
-
-    // Rest: slow for a whole window; the event carries the window's start.
-    const btRigidBody* body = shape.body();
-    const bool slow = body->getLinearVelocity().length() < kRestSpeed &&
-                      body->getAngularVelocity().length() < kRestSpin;
-    if (!slow) {
-      tracker.quietSince = -1.0;
-      tracker.atRest = false;
-    } else if (!emit) {
-      // At the start, a slow body is at rest only where something holds it
-      // up: one placed in mid-air is about to fall.
-      tracker.atRest = support[i] != kNoSupport;
-    } else {
-      if (tracker.quietSince < 0.0) tracker.quietSince = time_;
-      if (!tracker.atRest && time_ - tracker.quietSince >= kRestWindow - 1e-12) {
-        tracker.atRest = true;
+// A support after none that is not the last one means the entity
+// landed. A body that moves from one support to another without leaving
+// them (a cube that lands across two, the first to touch it carrying
+// nothing, the other all of its weight) has not.
+void World::observeSupport(std::size_t i, bool emit) {
+  Shape& shape = *entities_[i];
+  Tracker& tracker = trackers_[i];
+  const std::vector<int>& support = supports_;
+  if (support[i] != tracker.support) {
+    const bool airborne = tracker.support == kNoSupport;
+    tracker.support = support[i];
+    shape.setSupport(support[i] == kNoSupport ? Support() : participant(support[i]));
+    if (support[i] != kNoSupport) {
+      if (emit && airborne && support[i] != tracker.lastSupport) {
         Event e;
-        e.t = tracker.quietSince;
-        e.type = EventType::AtRest;
+        e.t = landingTime(tracker, shape, support[i]);
+        e.type = EventType::Lands;
         e.entity = shape.name();
+        e.on = shape.support();
         record(e);
       }
-    }
-
-    // The drop ends once the entity is at rest below the table top.
-    if (isDropping(shape.status()) && tracker.atRest &&
-        shape.position().y() < table_.topHeight()) {
-      shape.finishDrop();
+      tracker.lastSupport = support[i];
     }
   }
+}
+
+// Report 3.4: the centre passing an edge starts the drop, at the time
+// inside the step at which it passed.
+void World::observeEdge(std::size_t i, bool emit) {
+  Shape& shape = *entities_[i];
+  Tracker& tracker = trackers_[i];
+  if (shape.checkBoundary(table_) && emit) {
+    const double dt = settings_.timestep;
+    Event e;
+    e.t = time_ - dt + dt * edgeCrossing(toVec3(tracker.lastCentre), toVec3(tracker.lastVelocity), toVec3(shape.position()), dt,
+                                         shape.status(), table_.edges());
+    e.type = EventType::LeavesTable;
+    e.entity = shape.name();
+    e.edge = dropEdge(shape.status());
+    record(e);
+  }
+}
+
+// Rest: slow for a whole window; the event carries the window's start.
+// The drop ends once the entity is at rest below the table top.
+void World::observeRest(std::size_t i, bool emit) {
+  Shape& shape = *entities_[i];
+  Tracker& tracker = trackers_[i];
+  const std::vector<int>& support = supports_;
+  const btRigidBody* body = shape.body();
+  const bool slow = body->getLinearVelocity().length() < kRestSpeed &&
+                    body->getAngularVelocity().length() < kRestSpin;
+  if (!slow) {
+    tracker.quietSince = -1.0;
+    tracker.atRest = false;
+  } else if (!emit) {
+    // At the start, a slow body is at rest only where something holds it
+    // up: one placed in mid-air is about to fall.
+    tracker.atRest = support[i] != kNoSupport;
+  } else {
+    if (tracker.quietSince < 0.0) tracker.quietSince = time_;
+    if (!tracker.atRest && time_ - tracker.quietSince >= kRestWindow - 1e-12) {
+      tracker.atRest = true;
+      Event e;
+      e.t = tracker.quietSince;
+      e.type = EventType::AtRest;
+      e.entity = shape.name();
+      record(e);
+    }
+  }
+
+  if (isDropping(shape.status()) && tracker.atRest &&
+      shape.position().y() < table_.topHeight()) {
+    shape.finishDrop();
+  }
+}
+
+std::vector<std::pair<Support, Support>> World::overlaps(double tolerance) {
+  addLegsIfReachable();
+  world_->performDiscreteCollisionDetection();
+  std::vector<std::pair<Support, Support>> found;
+  for (int m = 0; m < dispatcher_->getNumManifolds(); ++m) {
+    const btPersistentManifold* manifold = dispatcher_->getManifoldByIndexInternal(m);
+    for (int p = 0; p < manifold->getNumContacts(); ++p) {
+      if (manifold->getContactPoint(p).getDistance() < -tolerance) {
+        found.emplace_back(participant(manifold->getBody0()), participant(manifold->getBody1()));
+        break;
+      }
+    }
+  }
+  return found;
+}
+
+double World::deepestPenetration() const {
+  double deepest = 0.0;
+  for (int m = 0; m < dispatcher_->getNumManifolds(); ++m) {
+    const btPersistentManifold* manifold = dispatcher_->getManifoldByIndexInternal(m);
+    for (int p = 0; p < manifold->getNumContacts(); ++p) {
+      deepest = std::max(deepest, double(-manifold->getContactPoint(p).getDistance()));
+    }
+  }
+  return deepest;
+}
+
+std::vector<Vec3> World::contactPoints() const {
+  // A point counts while it is within Bullet's contact breaking threshold
+  // of touching; the point drawn is midway between the two surfaces.
+  constexpr double kShownWithin = 1e-3;  // metres
+  std::vector<Vec3> points;
+  for (int m = 0; m < dispatcher_->getNumManifolds(); ++m) {
+    const btPersistentManifold* manifold = dispatcher_->getManifoldByIndexInternal(m);
+    for (int p = 0; p < manifold->getNumContacts(); ++p) {
+      const btManifoldPoint& point = manifold->getContactPoint(p);
+      if (point.getDistance() > kShownWithin) continue;
+      const btVector3 mid = 0.5 * (point.getPositionWorldOnA() + point.getPositionWorldOnB());
+      points.push_back({mid.x(), mid.y(), mid.z()});
+    }
+  }
+  return points;
+}
+
+std::vector<BodyMotion> World::motions() const {
+  std::vector<BodyMotion> out;
+  out.reserve(entities_.size());
+  for (const auto& e : entities_) {
+    const btRigidBody* body = e->body();
+    const btQuaternion q = body->getWorldTransform().getRotation();
+    out.push_back({toVec3(body->getWorldTransform().getOrigin()),
+                   {q.w(), q.x(), q.y(), q.z()},
+                   toVec3(body->getLinearVelocity()),
+                   toVec3(body->getAngularVelocity())});
+  }
+  return out;
+}
+
+std::vector<EntityState> World::snapshot() const {
+  const std::vector<BodyMotion> moving = motions();
+  std::vector<EntityState> states;
+  states.reserve(entities_.size());
+  for (std::size_t i = 0; i < entities_.size(); ++i) {
+    const Shape& e = *entities_[i];
+    EntityState s;
+    s.name = e.name();
+    s.shape = e.kind();
+    s.position = moving[i].position;
+    s.orientation = moving[i].orientation;
+    s.yawDegrees = e.yawDegrees();
+    s.linearVelocity = moving[i].linearVelocity;
+    s.angularVelocity = moving[i].angularVelocity;
+    s.status = e.status();
+    s.support = e.support();
+    states.push_back(s);
+  }
+  return states;
 }
 
 }  // namespace tabletop

@@ -9,7 +9,7 @@
 namespace tabletop {
 
 /// The scenes of the laws every shape on every support must follow
-/// (tests/sim/SlideTest and RestitutionTest, bench --laws). The supports:
+/// (tests/physics/laws/SlideTest and RestitutionTest, bench --laws). The supports:
 /// "table", "ground", "slab", a 100 kg box 1.6 x 0.1 x 1.6 m resting on
 /// the floor 3 m from the table's centre (floor friction 1), and "drum", a
 /// 100 kg cylinder 0.8 m in radius and 0.1 m high standing there.

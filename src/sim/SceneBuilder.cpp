@@ -3,11 +3,11 @@
 #include <map>
 
 #include "compat/CompatWorld.h"
-#include "physics/Cube.h"
-#include "physics/Cylinder.h"
-#include "physics/Seating.h"
-#include "physics/SolidBox.h"
-#include "physics/Sphere.h"
+#include "physics/shapes/Cube.h"
+#include "physics/shapes/Cylinder.h"
+#include "physics/shapes/Seating.h"
+#include "physics/shapes/SolidBox.h"
+#include "physics/shapes/Sphere.h"
 #include "rules/ReportContactFinder.h"
 #include "rules/RuleEngine.h"
 #include "scenario/ScenarioError.h"

@@ -1,7 +1,7 @@
 // The accuracy page shows what the program measures: the table in
 // docs/accuracy.md is the output of `bench --laws` at the rates it names,
 // byte for byte (docs/make-accuracy.sh writes it). The laws themselves are
-// held to their tolerances by tests/sim/SlideTest.cpp.
+// held to their tolerances by tests/physics/laws/SlideTest.cpp.
 
 #include <fstream>
 #include <sstream>

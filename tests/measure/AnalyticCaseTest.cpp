@@ -107,8 +107,8 @@ TEST(AnalyticCase, HeadOnSpheresTakeTheRestitutionVelocities) {
 
 // The projectile first touches the floor within 0.1 mm of v sqrt(2h/g)
 // beyond the edge at the scene's rate (measured 0 to 1e-7 mm): it leaves
-// the edge as its centre passes it, inside the step (FaceEdges.h; the
-// sweep over edges, radii, speeds and rates is tests/sim/EventTimeTest).
+// the edge as its centre passes it, inside the step (step/FaceExits.h; the
+// sweep over edges, radii, speeds and rates is tests/physics/laws/EventTimeTest).
 // Before, the step the centre passed the edge in held it level to its end.
 TEST(AnalyticCase, ProjectileLandsWhereTheClosedFormSays) {
   const Case c = run("projectile_off_the_edge");
@@ -146,8 +146,8 @@ TEST(AnalyticCase, CubeTipsWhereItsCentrePassesTheEdge) {
 // edge (measured at most 0.004 mm). Before, it lagged about half a part
 // (0.42 to 0.75 mm at 60 Hz): the part the centre passed the edge in held
 // it level to its end, each part took the push at the edge with its lever
-// at the part's start (FaceEdges.h), and the cube, lifted a nanometre off
-// the edge by a solve, fell freely for a step (FaceVertices::clipApart).
+// at the part's start (step/FaceExits.h), and the cube, lifted a nanometre off
+// the edge by a solve, fell freely for a step (SolidOnFaceAlgorithm::clipApart).
 TEST(AnalyticCase, CubeTipsAtTheEdgeFromAnyStart) {
   for (const double size : {0.1, 0.06}) {
     for (const double speed : {0.05, 0.03}) {

@@ -101,7 +101,7 @@ TEST(HardCase, MassRatiosRestWithTheDirectSolver) {
 // one island is too large to pivot, so `auto` gives it the long sweeps in
 // 1/120 s parts (IslandSolver::kLongSweeps); with the plain 10 sweeps it
 // drifts over 10 mm in 10 s (measured 34 mm; it fell before boxes a hair
-// apart were clipped, FaceVertices::clipApart), which the last lines hold
+// apart were clipped, SolidOnFaceAlgorithm::clipApart), which the last lines hold
 // as the reason for them.
 TEST(HardCase, PyramidStands) {
   const Scenario s = hard("pyramid_55");

@@ -7,10 +7,10 @@
 #include <gtest/gtest.h>
 
 #include "core/Angle.h"
-#include "physics/CollisionMargin.h"
-#include "physics/Cube.h"
-#include "physics/Seating.h"
-#include "physics/Sphere.h"
+#include "physics/shapes/CollisionMargin.h"
+#include "physics/shapes/Cube.h"
+#include "physics/shapes/Seating.h"
+#include "physics/shapes/Sphere.h"
 #include "rules/ReportRules.h"
 #include "support/PhysicsFixture.h"
 

@@ -1,7 +1,7 @@
 // The pipeline's collision configuration: its pool of collision algorithms
-// holds tabletop's own (FaceVertices, PlaneVertices). Bullet sizes the
+// holds tabletop's own (SolidOnFaceAlgorithm, SolidOnPlaneAlgorithm). Bullet sizes the
 // pool's elements for its algorithms alone; an algorithm larger than that
-// was written past its element into the next one's memory (FaceVertices
+// was written past its element into the next one's memory (SolidOnFaceAlgorithm
 // grown by 176 bytes scrambled every pair of a scene with cylinders).
 
 #include "physics/Pipeline.h"
@@ -10,8 +10,8 @@
 
 #include <gtest/gtest.h>
 
-#include "physics/FaceVertices.h"
-#include "physics/PlaneVertices.h"
+#include "physics/collision/SolidOnFaceAlgorithm.h"
+#include "physics/collision/SolidOnPlaneAlgorithm.h"
 
 namespace tabletop {
 namespace {
@@ -19,8 +19,8 @@ namespace {
 TEST(Pipeline, TheAlgorithmPoolHoldsTabletopsOwnAlgorithms) {
   const Pipeline pipeline(Settings{}, TableSpec{});
   const int element = pipeline.configuration->getCollisionAlgorithmPool()->getElementSize();
-  EXPECT_GE(element, static_cast<int>(sizeof(FaceVertices)));
-  EXPECT_GE(element, static_cast<int>(sizeof(PlaneVertices)));
+  EXPECT_GE(element, static_cast<int>(sizeof(SolidOnFaceAlgorithm)));
+  EXPECT_GE(element, static_cast<int>(sizeof(SolidOnPlaneAlgorithm)));
 }
 
 }  // namespace

@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include "physics/Cube.h"
-#include "physics/Seating.h"
-#include "physics/Sphere.h"
+#include "physics/shapes/Cube.h"
+#include "physics/shapes/Seating.h"
+#include "physics/shapes/Sphere.h"
 #include "support/PhysicsFixture.h"
 
 namespace tabletop {

@@ -10,9 +10,9 @@
 
 #include "core/Angle.h"
 #include "core/StateHash.h"
-#include "physics/Cube.h"
-#include "physics/Seating.h"
-#include "physics/Sphere.h"
+#include "physics/shapes/Cube.h"
+#include "physics/shapes/Seating.h"
+#include "physics/shapes/Sphere.h"
 #include "support/PhysicsFixture.h"
 
 namespace tabletop {

@@ -77,7 +77,7 @@ TEST(RandomScene, FirstSceneIsPinned) {
 //    default rate, 0.017% at 60 Hz, seed 6244):
 //    the discrete contacts' penetration, taken out by split impulse,
 //    lifts bodies a little. Before a cone's corners over a box's face were
-//    found where it reached over the edge (FaceVertices), seeds 3286 and
+//    found where it reached over the edge (SolidOnFaceAlgorithm), seeds 3286 and
 //    5510 reached 0.107% and 0.100% at 60 Hz: a struck cone's far rim
 //    sank 10 mm into the box it landed on;
 //  - never gain more than 1.5% over its lowest energy since the last push

@@ -4,7 +4,8 @@
 
 #include "core/Simulation.h"
 #include "measure/StabilityProbe.h"
-#include "physics/Impacts.h"
+#include "physics/collision/ClosestPoints.h"
+#include "physics/contact/ContactKinematics.h"
 #include "physics/World.h"
 #include "scenario/Scenario.h"
 

@@ -1,0 +1,81 @@
+#include "physics/shapes/SolidBox.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <BulletCollision/CollisionShapes/btConvexPolyhedron.h>
+
+#include "core/ShapeGeometry.h"
+#include "physics/shapes/CollisionMargin.h"
+
+namespace tabletop {
+namespace {
+
+// btBoxShape keeps its outer size: the margin is taken from inside the half
+// extents, so the box is exact for box-box and box-plane contacts. Its faces
+// and edges are built for polyhedral clipping (see World: box-box contacts).
+std::unique_ptr<btCollisionShape> makeBox(const btVector3& half, double margin) {
+  auto box = std::make_unique<btBoxShape>(half);
+  box->setMargin(margin);
+  initializeExactBoxFeatures(*box);
+  return box;
+}
+
+}  // namespace
+
+void initializeExactBoxFeatures(btBoxShape& box) {
+  // Bullet's hull is built on a box of the same size, which frees it:
+  // setting features over a shape's own leaks its faces' index arrays
+  // (btAlignedObjectArray copies faces over faces without destroying them).
+  const btVector3 half = box.getHalfExtentsWithMargin();
+  btBoxShape scratch(half);
+  scratch.setMargin(box.getMargin());
+  scratch.initializePolyhedralFeatures();
+  btConvexPolyhedron exact = *scratch.getConvexPolyhedron();
+  // Each corner is at +-half on every axis, each face's normal on one axis
+  // at half from the centre: Bullet's hull has them within a fraction of
+  // the size, so the nearest of those is the one meant.
+  for (int v = 0; v < exact.m_vertices.size(); ++v) {
+    for (int a = 0; a < 3; ++a) exact.m_vertices[v][a] = std::copysign(half[a], exact.m_vertices[v][a]);
+  }
+  for (int f = 0; f < exact.m_faces.size(); ++f) {
+    btScalar* plane = exact.m_faces[f].m_plane;
+    const int axis = btVector3(plane[0], plane[1], plane[2]).absolute().maxAxis();
+    const btScalar sign = plane[axis] > 0 ? 1 : -1;
+    for (int a = 0; a < 3; ++a) plane[a] = a == axis ? sign : 0;
+    plane[3] = -half[axis];
+  }
+  exact.m_uniqueEdges.clear();
+  exact.initialize();
+  box.setPolyhedralFeatures(exact);
+}
+
+SolidBox::SolidBox(std::string name, double width, double height, double depth)
+    : Shape(std::move(name),
+            makeBox(btVector3(width, height, depth) * 0.5,
+                    collisionMargin(0.5 * std::min({width, height, depth})))),
+      half_(btVector3(width, height, depth) * 0.5) {}
+
+// The box's geometry, from the sides its half extents were made from.
+static ShapeGeometry boxGeometry(const btVector3& half) {
+  return ShapeGeometry::box(2.0 * half.x(), 2.0 * half.y(), 2.0 * half.z());
+}
+
+double SolidBox::volume() const { return boxGeometry(half_).volume(); }
+
+btVector3 SolidBox::localInertia(double mass) const {
+  const Vec3 i = boxGeometry(half_).inertia(mass);
+  return btVector3(i.x, i.y, i.z);
+}
+
+// A ray from the centre along a horizontal direction leaves the box through
+// the first face it meets.
+double SolidBox::surfaceDistance(const btVector3& direction) const {
+  double t = std::numeric_limits<double>::infinity();
+  if (std::abs(direction.x()) > 1e-12) t = std::min(t, double(half_.x() / std::abs(direction.x())));
+  if (std::abs(direction.z()) > 1e-12) t = std::min(t, double(half_.z() / std::abs(direction.z())));
+  return std::isfinite(t) ? t : 0.0;
+}
+
+}  // namespace tabletop

@@ -1,0 +1,256 @@
+#pragma once
+
+#include <optional>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include <btBulletDynamicsCommon.h>
+
+#include "physics/contact/BodySet.h"
+#include "physics/solver/ContactIslands.h"
+#include "physics/collision/ContactResult.h"
+#include "physics/step/FaceExits.h"
+#include "physics/step/ImpactSearch.h"
+#include "physics/step/PartGuards.h"
+#include "physics/step/SlipEvents.h"
+
+namespace tabletop {
+
+class IslandSolver;
+
+/// The step of full physics: Bullet's discrete dynamics world, stepped by
+/// tabletop's own ordered stages (Step.cpp lists them; docs/step.md says
+/// what each does and why). Bullet finds the contacts (shapes, broadphase,
+/// narrow phase) and holds the bodies; tabletop decides when a part of a
+/// step ends (impacts, slips, bodies leaving a face), how touching points
+/// bounce, how each island is solved (solver/IslandSolver.h) and how
+/// positions follow the velocities:
+///  - a step is taken in parts, each ending at the next event inside it,
+///    at most kMaxParts;
+///  - touching points closing at an impact's speed bounce at a part's start
+///    in a solve of their own (Restitution.cpp);
+///  - rolling and spinning resistance are one isotropic angular impulse per
+///    contact (RollingResistance.cpp);
+///  - positions follow the trapezoid rule where the velocity changed
+///    smoothly, the end velocity where an impact or a stop changed it at
+///    once (Integration.cpp);
+///  - a slip that stops or turns round inside a part ends the part there
+///    (SlipStops.cpp, SlipEvents.h).
+class DynamicsWorld : public btDiscreteDynamicsWorld {
+ public:
+  /// Bullet's world with its islands joined by contacts (ContactIslands).
+  DynamicsWorld(btDispatcher* dispatcher, btBroadphaseInterface* broadphase, btConstraintSolver* solver,
+                btCollisionConfiguration* configuration);
+
+  /// The largest acceleration smooth forces (gravity, sliding friction)
+  /// give a body, m/s^2: a velocity change beyond it times the step is an
+  /// impact (0, the default: every contact is reused and no update is
+  /// second order).
+  void setSmoothAcceleration(double limit) { smoothAcceleration_ = limit; }
+  double smoothAcceleration() const { return smoothAcceleration_; }
+  /// Turns the second-order position update on (off by default).
+  void setSecondOrderPositions(bool on) { secondOrder_ = on; }
+
+  /// One step of `dt` seconds, no interpolation, in parts cut at impacts;
+  /// carried impulses are scaled when a part's length differs from the
+  /// part before.
+  void step(double dt);
+
+  /// A pair that struck inside the last step: `at` s after the step's
+  /// start, a struck point's normal on B (from B towards A).
+  struct Struck {
+    const btCollisionObject* a;
+    const btCollisionObject* b;
+    btVector3 normalOnB;
+    double at;
+  };
+  /// The pairs that bounced inside the last step, in time order: they may
+  /// be apart again by its end, where the manifolds no longer show it.
+  const std::vector<Struck>& struck() const { return struck_; }
+
+  /// Bullet's narrow phase, with the impulses of points a compound dropped
+  /// carried over (CarriedImpulses).
+  void performDiscreteCollisionDetection() override;
+
+ private:
+  // One part of the step: its place in the step and its length. `left` is
+  // what remained of the step at the part's start, the length Bullet's
+  // prediction, broadphase and deactivation see; `length` is where the
+  // part ends, shortened at the first event found inside it.
+  struct Part {
+    int index = 0;
+    double offset = 0.0;  // s from the step's start
+    double left = 0.0;    // s
+    double length = 0.0;  // s
+    bool mayCut = false;  // the part may end at an event
+  };
+  // The stages of a part, in order (Step.cpp).
+  void stepPart(Part& part);
+  // Stage 1: reads the velocities the part starts from, adds gravity to
+  // the forces of the coming part, and applies the rolling resistance.
+  void startPart(Part& part);
+  // Stages 3-6: stale points dropped, touching impacts bounced, the part
+  // cut at the next event, the islands solved.
+  void solveContacts(Part& part, btContactSolverInfo& solverInfo);
+  void dropStalePoints();
+  void cutAtNextEvent(Part& part, const ImpactScan& scan);
+  // Stage 7: positions from the velocities (Integration.cpp).
+  void integrate(const Part& part);
+
+  void applyRollingResistance(const Part& part);
+  // Each body's velocity and spin now, which the second-order update takes
+  // as the part's start (startVelocities_, startSpins_).
+  void saveStartVelocities();
+  // The bodies whose velocities changed since the last part ended (a push,
+  // a scene's start): kicked_.
+  void noteKicked();
+
+  bool markImpacts(double timeStep);
+  void forgetImpacts();
+  void resolveTouchingImpacts(const Part& part, btContactSolverInfo& solverInfo);
+  // Records the pairs the impact solve just bounced (struck()).
+  void noteStruck(const Part& part);
+  // Clears every point's kBouncedFlag as the part ends.
+  void forgetBounced();
+  void scaleCarriedImpulses(double ratio);
+  // Ends the part at `length` s instead: scales the impulses it carries
+  // and gives back the rolling resistance of the time it lost.
+  void shortenPart(Part& part, double length);
+  // How a part is solved: whole; or ready to be cut where a slip turns
+  // round (SlipEvents.h); or again, after such a cut.
+  enum class PartSolve { kWhole, kMayCutAtSlip, kAfterSlipCut };
+  SlipTurn solvePart(Part& part, btContactSolverInfo& solverInfo, const ImpactScan& scan, PartSolve how);
+  // A part in which no body touches or nears another (free flight): solved
+  // as Bullet solves it, leaving what solvePart leaves when there are no
+  // contacts, without scanning for them.
+  void solveUntouched(const Part& part, btContactSolverInfo& solverInfo);
+  // What a solved part leaves for the next, solvePart's and solveUntouched's
+  // alike: a solve has run, the bodies its closing points stopped, and the
+  // slips that stopped in it (none of either for a part with no contacts).
+  // Points closing at a part's start, with their manifolds.
+  using ClosingPoints = std::vector<std::pair<const btPersistentManifold*, const btManifoldPoint*>>;
+  void noteSolved(const ClosingPoints& closing, const std::vector<Slip>& slipping);
+  std::vector<btManifoldPoint*> holdFrictionAlongLine();
+  // After a part cut at a slip's turn and solved again: the line the slip
+  // slid on, for the next part's friction rows, and whether it stopped.
+  void noteSlipEnd(const Part& part, const SlipTurn& turned);
+  void findSlipStops(const std::vector<Slip>& slipping);
+  bool slidIn(const ContactKey& key) const;
+  // Slips slower than this share of what kinetic friction removes in a
+  // part are taken as stuck; friction this close to its limit as sliding.
+  static constexpr double kSlipShare = 1e-3;
+  // Points whose slips' directions have cosines above this with one
+  // another slip along one line (within 2.6 degrees).
+  static constexpr double kOneLine = 0.999;
+  // The closing speed, m/s, above which a point that stops a body counts
+  // as stopping it at once: a tenth of what smooth forces give in a step,
+  // above a resting contact's rounding. A point closing just under it
+  // moves by the body's mean velocity and can go this times dt / 2 in
+  // (0.31 mm at 60 Hz); lower thresholds let the pyramid's sweeps drift
+  // (docs/bullet-corrections.md, "Left").
+  double stopSpeed() const { return 0.1 * smoothAcceleration_ * stepLength_; }
+
+  // How many times the settings' iterations an impact gets.
+  static constexpr int kImpactSweeps = 5;
+  // At most this many parts to a step (the cap on impacts placed at their
+  // own time in one step; past it the rest of the step is taken whole).
+  static constexpr int kMaxParts = 8;
+
+  double smoothAcceleration_ = 0.0;
+  bool secondOrder_ = false;
+  double lastStep_ = 0.0;    // the length of the part before, s (0: none yet)
+  double stepLength_ = 0.0;  // the step being taken, s
+  std::vector<Struck> struck_;
+  bool solved_ = false;      // a solve has run: contacts carry their loads
+  std::vector<std::pair<btManifoldPoint*, btScalar>> heldGaps_;
+  std::vector<HeldPlace> heldPlaces_;
+  PointBoxes pointBoxes_;  // the boxes the part's points lie on (FaceExits)
+  ImpactScan::Storage impactStorage_;  // the part's ImpactScan's
+  BodySet stopped_;  // bodies a closing point stopped in the last solve
+  // Adds to stopped_ the bodies resting on them whose touching points'
+  // normal velocity the stop changed at once.
+  void spreadStops();
+  // spreadStops' scratch: each body's index among the moving ones and its
+  // manifolds (by world array index), and the manifolds left to look at.
+  struct StopSpread {
+    std::vector<int> moving;
+    std::vector<std::vector<int>> manifoldsOf;
+    std::vector<int> work;
+  };
+  StopSpread stopSpread_;
+  // A slip's share of the part (slipped for) and its contacts' normal, unit.
+  struct SlipStop {
+    double share = 1.0;
+    btVector3 normal{0, 0, 0};
+  };
+  // What a body's slips did in the last solve's part (findSlipStops, read
+  // by integrateTransforms):
+  // - stop: the first of its contacts whose slip friction stopped inside
+  //   the part (share below 1; 1: none stopped), and the friction there
+  //   that took back its rolling resistance's slip (stopTaken, N s over
+  //   the part: after the stop, it is the friction that still acts);
+  // - face: the face (three points or more carrying load) with the largest
+  //   friction limit it slipped on (faceLimit, N s; 0: none), about whose
+  //   normal only that friction turns the body.
+  struct BodySlip {
+    SlipStop stop;
+    double stopTaken = 0;
+    SlipStop face;
+    double faceLimit = 0;
+  };
+  std::unordered_map<const btCollisionObject*, BodySlip> slips_;
+  SlidingContacts sliding_;  // contacts whose friction was at its limit in it
+  SlidingContacts slidingNext_;  // findSlipStops', kept to reuse its storage
+  // A contact's friction in the last solve, its limit, and its points'
+  // normals by their loads, turned one way (findSlipStops; kept to reuse
+  // its storage).
+  struct SlipUse {
+    const btPersistentManifold* manifold;
+    double friction = 0, limit = 0;
+    btVector3 normal{0, 0, 0};
+    int loaded = 0;  // slipping points carrying load
+  };
+  std::vector<std::pair<ContactKey, SlipUse>> slipUse_;
+  std::vector<std::pair<btVector3, btVector3>> endVelocities_;  // each body's at the last part's end
+  BodySet kicked_;  // noteKicked's
+  std::vector<btVector3> startVelocities_;
+  std::vector<btVector3> startSpins_;    // rad/s, read with startVelocities_
+  std::vector<btTransform> startPoses_;  // each body's at the part's start, when one turns by its mean rate
+  BodySet meanTurn_;  // bodies with rows held at the mean
+  // solvePart's, kept to reuse their storage: the impulses a part carries
+  // on, the points closing at its start and their bodies.
+  std::vector<std::pair<btManifoldPoint*, btVector3>> partCarried_;
+  ClosingPoints closing_;
+  std::vector<Slip> slipping_;  // the points slipping at its start
+  std::vector<Slip> mayTurn_;   // those whose slip may turn in it
+  BodySet stopping_;
+  BodySet touchingAnother_;  // slipsThatMayTurn's scratch
+  CarriedImpulses carried_;  // per non-static body, at the step's start
+  PartStart partStart_;      // the part's start, while a slip may turn in it
+  // The contact whose slip turned round or stopped where the last part was
+  // cut, the line it slid on, and whether it turned round.
+  struct SlipEnd {
+    ContactKey contact;
+    btVector3 along;
+    bool reversed;
+  };
+  std::optional<SlipEnd> lastSlipEnd_;
+  std::vector<std::pair<btRigidBody*, btVector3>> resisted_;  // the part's rolling-resistance impulses, N m s
+  // Each resisted contact's part (applyRollingResistance): the friction
+  // impulse that takes back the slip the resistance made (N s, over the
+  // whole part), and whether it slipped before the resistance acted.
+  struct ResistedSlip {
+    ContactKey contact;
+    double friction = 0;
+    bool slippedBefore = false;
+  };
+  std::vector<ResistedSlip> resistedSlips_;
+  std::vector<std::size_t> resistedOrder_;  // resistedSlips_' indices by contact
+  BodySet resistedBodies_;                   // the bodies of resisted_
+  const ResistedSlip* resistedSlip(const ContactKey& key) const;  // the contact's, or null
+  ContactIslands islands_;   // replaces the island manager Bullet made
+  IslandSolver* islandSolver_;  // the constraint solver, if tabletop's (else null)
+};
+
+}  // namespace tabletop

@@ -1,0 +1,185 @@
+#include "physics/step/DynamicsWorld.h"
+
+#include <algorithm>
+
+#include "physics/collision/ContactResult.h"
+#include "physics/shapes/ShapeKinds.h"
+#include "physics/solver/IslandSolver.h"
+#include "physics/step/FaceExits.h"
+#include "physics/step/ImpactSearch.h"
+
+// The step of full physics, stage by stage (docs/step.md).
+namespace tabletop {
+namespace {
+
+// A box against a box or against the table, and a box or a hull against
+// the floor: the pairs whose touching points are all found afresh every
+// step they touch (polyhedral clipping, SolidOnPlaneAlgorithm), so a point
+// kept from an earlier step that has slid is stale.
+bool isClippedBoxPair(const btPersistentManifold& manifold) {
+  const auto type = [](const btCollisionObject* o) { return o->getCollisionShape()->getShapeType(); };
+  const int a = type(manifold.getBody0()), b = type(manifold.getBody1());
+  const auto solidOnPlane = [](int solid, int plane) {
+    return plane == STATIC_PLANE_PROXYTYPE && (solid == BOX_SHAPE_PROXYTYPE || solid == CONVEX_HULL_SHAPE_PROXYTYPE ||
+                                               solid == CYLINDER_SHAPE_PROXYTYPE);
+  };
+  if (solidOnPlane(a, b) || solidOnPlane(b, a)) return true;
+  const auto clipped = [](int t) { return t == BOX_SHAPE_PROXYTYPE || t == COMPOUND_SHAPE_PROXYTYPE; };
+  return (a == BOX_SHAPE_PROXYTYPE || b == BOX_SHAPE_PROXYTYPE) && clipped(a) && clipped(b);
+}
+
+// Removes every point but the deepest (ties: the first).
+void keepDeepestPoint(btPersistentManifold& manifold) {
+  int deepest = 0;
+  for (int p = 1; p < manifold.getNumContacts(); ++p) {
+    if (manifold.getContactPoint(p).getDistance() <
+        manifold.getContactPoint(deepest).getDistance()) {
+      deepest = p;
+    }
+  }
+  for (int p = manifold.getNumContacts() - 1; p >= 0; --p) {
+    if (p != deepest) manifold.removeContactPoint(p);
+  }
+}
+
+}  // namespace
+
+DynamicsWorld::DynamicsWorld(btDispatcher* dispatcher, btBroadphaseInterface* broadphase,
+                             btConstraintSolver* solver, btCollisionConfiguration* configuration)
+    : btDiscreteDynamicsWorld(dispatcher, broadphase, solver, configuration),
+      islandSolver_(dynamic_cast<IslandSolver*>(solver)) {
+  // Bullet made its own with btAlignedAlloc and placement new.
+  if (m_ownsIslandManager) {
+    m_islandManager->~btSimulationIslandManager();
+    btAlignedFree(m_islandManager);
+  }
+  m_islandManager = &islands_;
+  m_ownsIslandManager = false;
+}
+
+// The step is taken in parts, each ending at the next event inside it
+// (cutAtNextEvent, or a slip's stop in solveContacts), at most kMaxParts;
+// the last part takes whatever is left whole.
+void DynamicsWorld::step(double dt) {
+  stepLength_ = dt;
+  struck_.clear();
+  double left = dt;
+  for (int index = 0; left > 0; ++index) {
+    if (lastStep_ > 0) scaleCarriedImpulses(left / lastStep_);
+    Part part;
+    part.index = index;
+    part.offset = dt - left;
+    part.left = left;
+    part.length = left;
+    part.mayCut = index + 1 < kMaxParts && smoothAcceleration_ > 0;
+    stepPart(part);
+    lastStep_ = part.length;
+    left = part.length < left ? left - part.length : 0.0;
+  }
+}
+
+// One part, its stages in order. Bullet's own bookkeeping (kinematic
+// velocities, predicted poses, continuous collision, deactivation, motion
+// states) runs where its stepSimulation runs it, with the length the part
+// had at its start.
+void DynamicsWorld::stepPart(Part& part) {
+  const btScalar left = part.left;
+  m_fixedTimeStep = 0;
+  m_localTime = m_latencyMotionStateInterpolation ? 0 : left;
+  if (btFuzzyZero(left)) {
+    synchronizeMotionStates();
+    clearForces();
+    return;
+  }
+  saveKinematicState(left);
+  // 1. Start: the velocities the part starts from, gravity, rolling resistance.
+  startPart(part);
+  predictUnconstraintMotion(left);
+  btDispatcherInfo& dispatch = getDispatchInfo();
+  dispatch.m_timeStep = left;
+  dispatch.m_stepCount = 0;
+  dispatch.m_debugDraw = getDebugDrawer();
+  createPredictiveContacts(left);
+  // 2. Contacts: Bullet's broadphase and narrow phase through tabletop's
+  // pair table (collision/ContactDispatcher.h), then its islands.
+  performDiscreteCollisionDetection();
+  calculateSimulationIslands();
+  // 3-6. Stale points, restitution, events, the solve.
+  getSolverInfo().m_timeStep = left;
+  solveContacts(part, getSolverInfo());
+  // 7. Integration.
+  integrate(part);
+  updateActions(left);
+  updateActivationState(left);
+  synchronizeMotionStates();
+  clearForces();
+}
+
+// Before any velocity changes: the velocities the second-order update
+// starts from are read here.
+void DynamicsWorld::startPart(Part& part) {
+  noteKicked();
+  if (smoothAcceleration_ > 0) saveStartVelocities();
+  btDiscreteDynamicsWorld::applyGravity();
+  applyRollingResistance(part);
+}
+
+void DynamicsWorld::performDiscreteCollisionDetection() {
+  const CarriedImpulses::Guard carried(carried_, *getDispatcher());
+  btDiscreteDynamicsWorld::performDiscreteCollisionDetection();
+}
+
+void DynamicsWorld::solveContacts(Part& part, btContactSolverInfo& solverInfo) {
+  btDispatcher* dispatcher = getDispatcher();
+  const bool untouched = dispatcher->getNumManifolds() == 0 &&
+                         getBroadphase()->getOverlappingPairCache()->getNumOverlappingPairs() == 0;
+  if (untouched) {
+    solveUntouched(part, solverInfo);
+    return;
+  }
+  // 3. Stale points.
+  dropStalePoints();
+  // 4. Restitution: touching points closing at an impact's speed bounce now.
+  resolveTouchingImpacts(part, solverInfo);
+  // 5. Events: the part ends at the next impact or face exit inside it.
+  pointBoxes_.start(*dispatcher);
+  const ImpactScan scan(*dispatcher, impactStorage_);
+  if (part.mayCut) cutAtNextEvent(part, scan);
+  // 6. The solve. A part in which a slip turns round or stops is cut there
+  // and solved again (SlipEvents.h), once: the next part takes what is left.
+  const SlipTurn turned = [&] {
+    const FrictionAlongLine held(holdFrictionAlongLine());
+    return solvePart(part, solverInfo, scan,
+                     part.mayCut && secondOrder_ ? PartSolve::kMayCutAtSlip : PartSolve::kWhole);
+  }();
+  lastSlipEnd_.reset();
+  if (!turned.manifold) return;
+  solvePart(part, solverInfo, scan, PartSolve::kAfterSlipCut);
+  noteSlipEnd(part, turned);
+}
+
+// A ball's manifold keeps its deepest point; box-box and box-table points
+// whose sides slid apart along the contact plane go.
+void DynamicsWorld::dropStalePoints() {
+  btDispatcher* dispatcher = getDispatcher();
+  for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
+    btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
+    if (manifold->getNumContacts() > 1 &&
+        (isBall(*manifold->getBody0()) || isBall(*manifold->getBody1()))) {
+      keepDeepestPoint(*manifold);
+    } else if (isClippedBoxPair(*manifold)) {
+      dropDriftedPoints(*manifold);
+    }
+  }
+}
+
+void DynamicsWorld::cutAtNextEvent(Part& part, const ImpactScan& scan) {
+  btDispatcher* dispatcher = getDispatcher();
+  const double cut = std::min({scan.earliestImpact(part.length, kBounceSpeed),
+                               scan.earliestSeparatedImpact(*getBroadphase()->getOverlappingPairCache(),
+                                                            part.length, kBounceSpeed),
+                               earliestFaceExit(*dispatcher, part.length, pointBoxes_)});
+  if (cut < part.length) shortenPart(part, cut);
+}
+
+}  // namespace tabletop
