@@ -1,6 +1,6 @@
 #include "physics/collision/ContactDispatcher.h"
 
-#include "physics/shapes/ShapeKinds.h"
+#include "physics/collision/PairTable.h"
 
 namespace tabletop {
 
@@ -9,51 +9,27 @@ ContactDispatcher::ContactDispatcher(btCollisionConfiguration* configuration)
   setDispatcherFlags(getDispatcherFlags() & ~CD_USE_RELATIVE_CONTACT_BREAKING_THRESHOLD);
   setNearCallback(&ContactDispatcher::nearCallback);
   // Bullet's default configuration makes every convex pair with one
-  // create function; it is copied and given Bullet's multipoint defaults.
-  const auto* convex = static_cast<const btConvexConvexAlgorithm::CreateFunc*>(
-      configuration->getCollisionAlgorithmCreateFunc(CONVEX_HULL_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE));
-  multipoint_ = std::make_unique<btConvexConvexAlgorithm::CreateFunc>(*convex);
+  // create function (polyhedral clipping with SAT axes, else GJK); a copy
+  // is given Bullet's multipoint defaults.
+  auto* convex = configuration->getCollisionAlgorithmCreateFunc(CONVEX_HULL_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE);
+  multipoint_ = std::make_unique<btConvexConvexAlgorithm::CreateFunc>(
+      *static_cast<const btConvexConvexAlgorithm::CreateFunc*>(convex));
   multipoint_->m_numPerturbationIterations = 3;
   multipoint_->m_minimumPointsPerturbationThreshold = 3;
-  for (const int other : {BOX_SHAPE_PROXYTYPE, CYLINDER_SHAPE_PROXYTYPE}) {
-    registerCollisionCreateFunc(CYLINDER_SHAPE_PROXYTYPE, other, multipoint_.get());
-    registerCollisionCreateFunc(other, CYLINDER_SHAPE_PROXYTYPE, multipoint_.get());
-  }
-  // Cylinders and hulls on a box's face: as on the floor while they rest
-  // on it, else the pair's algorithm above (for a hull, clipping).
-  hullOnBox_ = std::make_unique<SolidOnFaceAlgorithm::CreateFunc>(
-      configuration->getCollisionAlgorithmCreateFunc(CONVEX_HULL_SHAPE_PROXYTYPE, BOX_SHAPE_PROXYTYPE));
-  cylinderOnBox_ = std::make_unique<SolidOnFaceAlgorithm::CreateFunc>(multipoint_.get());
-  registerCollisionCreateFunc(CYLINDER_SHAPE_PROXYTYPE, BOX_SHAPE_PROXYTYPE, cylinderOnBox_.get());
-  registerCollisionCreateFunc(BOX_SHAPE_PROXYTYPE, CYLINDER_SHAPE_PROXYTYPE, cylinderOnBox_.get());
-  registerCollisionCreateFunc(CONVEX_HULL_SHAPE_PROXYTYPE, BOX_SHAPE_PROXYTYPE, hullOnBox_.get());
-  registerCollisionCreateFunc(BOX_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE, hullOnBox_.get());
-  // The same on a cylinder's and a cone's ends: a cylinder, a cone or a box
-  // resting on a standing cylinder slid 1.2 mm long at 60 Hz and turned 0.9
-  // degrees on Bullet's points, a stack of equal cylinders leaned at its
-  // start, and a cube on a cone's top stood 0.4 mm aside.
-  cylinderOnCylinder_ = std::make_unique<SolidOnFaceAlgorithm::CreateFunc>(multipoint_.get());
-  registerCollisionCreateFunc(CYLINDER_SHAPE_PROXYTYPE, CYLINDER_SHAPE_PROXYTYPE, cylinderOnCylinder_.get());
-  hullOnCylinder_ = std::make_unique<SolidOnFaceAlgorithm::CreateFunc>(
-      configuration->getCollisionAlgorithmCreateFunc(CONVEX_HULL_SHAPE_PROXYTYPE, CYLINDER_SHAPE_PROXYTYPE));
-  registerCollisionCreateFunc(CONVEX_HULL_SHAPE_PROXYTYPE, CYLINDER_SHAPE_PROXYTYPE, hullOnCylinder_.get());
-  registerCollisionCreateFunc(CYLINDER_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE, hullOnCylinder_.get());
-  hullOnHull_ = std::make_unique<SolidOnFaceAlgorithm::CreateFunc>(
-      configuration->getCollisionAlgorithmCreateFunc(CONVEX_HULL_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE));
-  registerCollisionCreateFunc(CONVEX_HULL_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE, hullOnHull_.get());
-  // Two boxes likewise, else by polyhedral clipping. Bullet's box-box
-  // detector reports only penetrating corners: a tilt of 1e-10 rad dropped
-  // a corner and jolted a sliding cube (0.15-0.5 rad/s), 3-5 mm off its
-  // slide; clipping (with SAT axes, Pipeline) reports nothing while the
-  // faces are a hair apart, and a box sliding on a box on the floor, lifted
-  // 0.4 nm by the solve, fell freely for a step.
-  boxOnBox_ = std::make_unique<SolidOnFaceAlgorithm::CreateFunc>(
-      configuration->getCollisionAlgorithmCreateFunc(CONVEX_HULL_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE));
-  registerCollisionCreateFunc(BOX_SHAPE_PROXYTYPE, BOX_SHAPE_PROXYTYPE, boxOnBox_.get());
-  // Boxes and hulls on the floor: every vertex near it, every step.
-  for (const int solid : {BOX_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE, CYLINDER_SHAPE_PROXYTYPE}) {
-    registerCollisionCreateFunc(solid, STATIC_PLANE_PROXYTYPE, &planeVertices_);
-    registerCollisionCreateFunc(STATIC_PLANE_PROXYTYPE, solid, &planeVertices_);
+  // Each row of the pair table that is not Bullet's own, both ways round.
+  for (const PairRule* rule = pairRulesBegin(); rule != pairRulesEnd(); ++rule) {
+    btCollisionAlgorithmCreateFunc* finder = nullptr;
+    switch (rule->finder) {
+      case PointFinder::kBullet: continue;
+      case PointFinder::kSolidOnPlane: finder = &planeFinder_; break;
+      case PointFinder::kSolidOnFace:
+        faceFinders_.push_back(std::make_unique<SolidOnFaceAlgorithm::CreateFunc>(
+            rule->otherwise == FaceFallback::kMultipointGjk ? multipoint_.get() : convex));
+        finder = faceFinders_.back().get();
+        break;
+    }
+    registerCollisionCreateFunc(rule->a, rule->b, finder);
+    registerCollisionCreateFunc(rule->b, rule->a, finder);
   }
 }
 
@@ -77,7 +53,7 @@ void ContactDispatcher::nearCallback(btBroadphasePair& pair, btCollisionDispatch
   // unless asked for points this far apart. Every other pair is found up
   // to the breaking threshold ahead of touching, and an impact between
   // spheres is placed at its own time like any other (DynamicsWorld).
-  if (isBall(*object0) && isBall(*object1)) {
+  if (!pairRule(*object0, *object1).seenAhead) {
     result.m_closestPointDistanceThreshold = gContactBreakingThreshold;
   }
   if (info.m_dispatchFunc == btDispatcherInfo::DISPATCH_DISCRETE) {

@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "physics/collision/ContactResult.h"
-#include "physics/shapes/ShapeKinds.h"
+#include "physics/collision/PairTable.h"
 #include "physics/solver/IslandSolver.h"
 #include "physics/step/FaceExits.h"
 #include "physics/step/ImpactSearch.h"
@@ -11,22 +11,6 @@
 // The step of full physics, stage by stage (docs/step.md).
 namespace tabletop {
 namespace {
-
-// A box against a box or against the table, and a box or a hull against
-// the floor: the pairs whose touching points are all found afresh every
-// step they touch (polyhedral clipping, SolidOnPlaneAlgorithm), so a point
-// kept from an earlier step that has slid is stale.
-bool isClippedBoxPair(const btPersistentManifold& manifold) {
-  const auto type = [](const btCollisionObject* o) { return o->getCollisionShape()->getShapeType(); };
-  const int a = type(manifold.getBody0()), b = type(manifold.getBody1());
-  const auto solidOnPlane = [](int solid, int plane) {
-    return plane == STATIC_PLANE_PROXYTYPE && (solid == BOX_SHAPE_PROXYTYPE || solid == CONVEX_HULL_SHAPE_PROXYTYPE ||
-                                               solid == CYLINDER_SHAPE_PROXYTYPE);
-  };
-  if (solidOnPlane(a, b) || solidOnPlane(b, a)) return true;
-  const auto clipped = [](int t) { return t == BOX_SHAPE_PROXYTYPE || t == COMPOUND_SHAPE_PROXYTYPE; };
-  return (a == BOX_SHAPE_PROXYTYPE || b == BOX_SHAPE_PROXYTYPE) && clipped(a) && clipped(b);
-}
 
 // Removes every point but the deepest (ties: the first).
 void keepDeepestPoint(btPersistentManifold& manifold) {
@@ -158,16 +142,17 @@ void DynamicsWorld::solveContacts(Part& part, btContactSolverInfo& solverInfo) {
   noteSlipEnd(part, turned);
 }
 
-// A ball's manifold keeps its deepest point; box-box and box-table points
-// whose sides slid apart along the contact plane go.
+// As the pair table says (PairTable.h): a ball's manifold keeps its
+// deepest point; a pair whose points are found afresh drops those whose
+// sides slid apart along the contact plane.
 void DynamicsWorld::dropStalePoints() {
   btDispatcher* dispatcher = getDispatcher();
   for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
     btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
-    if (manifold->getNumContacts() > 1 &&
-        (isBall(*manifold->getBody0()) || isBall(*manifold->getBody1()))) {
+    const PointUpkeep upkeep = pairRule(*manifold->getBody0(), *manifold->getBody1()).upkeep;
+    if (upkeep == PointUpkeep::kDeepestOnly && manifold->getNumContacts() > 1) {
       keepDeepestPoint(*manifold);
-    } else if (isClippedBoxPair(*manifold)) {
+    } else if (upkeep == PointUpkeep::kFoundAfresh) {
       dropDriftedPoints(*manifold);
     }
   }
