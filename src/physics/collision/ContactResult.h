@@ -48,8 +48,8 @@ class ContactResult : public btManifoldResult {
   /// (SolidCorners' chosen corners, each one the solid rests on). The narrow
   /// end of a cone lying on its side is a ring narrower than the merge
   /// radius, and its corners replaced each other, the last one added, not
-  /// the deepest, staying: the end sank 5.6 mm into the table unseen, and
-  /// rose when a later choice found it (0.2% of a scene's energy gained).
+  /// the deepest, staying: the end sank into the table unseen, and rose
+  /// when a later choice found it, gaining energy.
   /// Bullet's own algorithms add points that are meant to merge.
   void setEachPointDistinct(bool on) {
     distinct_ = on;
@@ -72,9 +72,8 @@ class ContactResult : public btManifoldResult {
 /// Carries warm-start impulses over Bullet's compound algorithm, which
 /// refreshes its children's manifolds before it finds their points and so
 /// drops every point whose sides slid more than the breaking threshold
-/// (2 cm) since the last step: a body sliding over the table faster than
-/// 1.2 m/s at 60 Hz started every step cold, and a cone pushed at 77
-/// degrees turned by 1.3 degrees and stopped 2.8 mm short. save() before
+/// since the last step: a body sliding fast over the table started every
+/// step cold, and turned and stopped short (docs/bullet-corrections.md). save() before
 /// the narrow phase; restore() after it gives a point made anew the
 /// impulses of the dropped point it stands for: the nearest within the
 /// merge radius as a feature of either body (ContactResult), each at most

@@ -66,16 +66,16 @@ void addCornerPoints(btManifoldResult& result, const std::vector<NearCorner>& ch
 /// fresh choice would take, or another corner lies, or will lie by the
 /// step's end, more than kReach below them. Without the corners on their
 /// way, a tall cone falling onto its side held only the end that landed
-/// first, and the other end, swinging down at 1 m/s, sank 20 mm into the
-/// table at 60 Hz before it was found. The lowest corner of each end
+/// first, and the other end, swinging down, sank into the table before it
+/// was found. The lowest corner of each end
 /// (the solid's -y and +y halves) that lies nearer the plane than the
 /// centre is kept even outside the band and chosen right after the
 /// lowest: a cylinder toppling onto its side rests on both rims, and with
-/// one rim's points alone the other end landed 3 to 5 mm deep at 60 Hz.
+/// one rim's points alone the other end landed millimetres deep.
 /// Chosen afresh each step by depth, the tie between level corners was
 /// broken by rounding: a standing cylinder took a new set of rim
-/// points most steps and yawed by up to 12 degrees while sliding on the
-/// floor (35 mm short of the closed form at 30 Hz, 25 mm at 60 Hz).
+/// points most steps, and yawed and stopped short while sliding on the
+/// floor (docs/bullet-corrections.md).
 class CornerChoice {
  public:
   /// How far (m) another corner may lie below the kept ones before they

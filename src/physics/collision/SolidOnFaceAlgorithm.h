@@ -22,9 +22,8 @@ namespace tabletop {
 ///
 /// Bullet's algorithms found a standing cylinder's face on the table by
 /// GJK at three small turns, and a cone's by clipping its 32-sided base,
-/// of which a manifold keeps four; the points changed from step to step
-/// and a slide of 0.52 m ended 2-24 mm (cylinder) and 10-32 mm (cone)
-/// short, turned by up to 3 and 26 degrees, at 30 Hz to 1 kHz.
+/// of which a manifold keeps four; the points changed from step to step,
+/// and slides ended short and turned (docs/bullet-corrections.md).
 class SolidOnFaceAlgorithm : public btActivatingCollisionAlgorithm {
  public:
   SolidOnFaceAlgorithm(const btCollisionAlgorithmConstructionInfo& info, const btCollisionObjectWrapper* body0,
@@ -97,16 +96,15 @@ class SolidOnFaceAlgorithm : public btActivatingCollisionAlgorithm {
   // chosen as on a face (CornerChoice) into this algorithm's own manifold,
   // beside Bullet's, so that the rest of a base swinging down onto the
   // face is seen before it arrives: a cone struck onto a box's edge landed
-  // on one rim point, turned about it, and its far rim sank 10 mm into the
-  // box within the step, unseen. False if no corner is over the face.
+  // on one rim point, turned about it, and its far rim sank into the box
+  // within the step, unseen. False if no corner is over the face.
   bool addCornersOverFace(const btCollisionObjectWrapper* boxWrap, const btCollisionObjectWrapper* solidWrap,
                           bool boxFirst, btScalar timeStep, btManifoldResult* result);
   void clearOtherwise();
   // Two boxes a hair apart where neither rests on the other's face (a cube
   // tipping over the table's edge, lifted a nanometre by the last solve):
   // Bullet's separating-axis test finds an axis between them and clips
-  // nothing, and the cube fell freely for a step (1.4 mm at 60 Hz), then
-  // struck. Within the breaking threshold their faces are clipped along
+  // nothing, and the cube fell freely for a step, then struck. Within the breaking threshold their faces are clipped along
   // GJK's normal, as Bullet clips them once they touch.
   void clipApart(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
                  btManifoldResult* result);

@@ -12,10 +12,11 @@ namespace tabletop {
 /// points), at most four, chosen by a CornerChoice and found again each
 /// step, as polyhedral clipping finds a box's whole face on the table.
 /// Bullet's plane test adds one corner a step (and a few by perturbation)
-/// and keeps the rest from earlier steps; on a sliding cube those slid along with it up to 2 cm from where it touched, and it
-/// yawed by 19 degrees and stopped 20 mm short of its closed-form slide.
+/// and keeps the rest from earlier steps; on a sliding cube those slid
+/// along with it from where it touched, and it yawed and stopped short of
+/// its closed-form slide (docs/bullet-corrections.md).
 /// Because every touching vertex comes back each step, the pair's drifted
-/// points can be dropped, as a box pair's are (DynamicsWorld).
+/// points can be dropped, as a box pair's are (PairTable.h).
 class SolidOnPlaneAlgorithm : public btActivatingCollisionAlgorithm {
  public:
   SolidOnPlaneAlgorithm(const btCollisionAlgorithmConstructionInfo& info, const btCollisionObjectWrapper* body0,

@@ -47,9 +47,8 @@ double slipSpeed(const btPersistentManifold& manifold, const btManifoldPoint& po
 /// s long: it closes faster than kBounceSpeed and is touching, or near
 /// enough that it would touch within kSameInstant (or 1% of the step).
 /// Such a point is taken as touching: Bullet's row would let it close by
-/// its gap over the part, taking gap / part off the impact (13 um at 1 kHz:
-/// a ball of 0.4 kg striking one of 2.5 kg came away 1.4% slow at e = 1,
-/// and 0.1% at e = 0).
+/// its gap over the part, taking gap / part off the impact, most at high
+/// rates (docs/bullet-corrections.md).
 bool strikesNow(const btPersistentManifold& manifold, const btManifoldPoint& point, double stepLength);
 
 /// The first time, s, at which a gap of `gap` m closes from the closing

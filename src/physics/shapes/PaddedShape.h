@@ -14,10 +14,9 @@ namespace tabletop {
 /// manifold and the impulses it carries, in any step where the child's
 /// bounding box and the other body's do not overlap, and it tests the exact
 /// boxes. A cube resting on the top touches it along a face: their boxes
-/// share a plane, and a rounding-sized lift (3e-14 m) parted them. The
-/// cube's four points went, it fell freely for one step (g dt = 4 cm/s at
-/// 240 Hz), sank 85 um into the top and was pushed back out: a body at
-/// rest moved. The broadphase pads every box by the contact breaking
+/// share a plane, and a rounding-sized lift parted them. The cube's four
+/// points went, it fell freely for one step, sank into the top and was
+/// pushed back out: a body at rest moved. The broadphase pads every box by the contact breaking
 /// threshold; a child padded by as much is kept while the pair is.
 template <class Base>
 class PaddedShape : public Base {

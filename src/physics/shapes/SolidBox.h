@@ -28,10 +28,9 @@ class SolidBox : public Shape {
 /// Builds `box`'s faces and edges for polyhedral clipping (Bullet's
 /// separating-axis test) with its corners exactly at its half extents.
 /// Bullet's hull step (initializePolyhedralFeatures) rounds them through
-/// integers: a 46 mm cube's corners came out 4.5 um inside its faces, and
-/// 28% of box sizes from 1 mm to 1 m were off, by up to 2.5e-4 of the
-/// size. A cube seated on such a cube then read as 4.5 um above it, not
-/// touching, and fell freely for a step (5.4 mm at 30 Hz) into it.
+/// integers, so many box sizes came out a few micrometres small; a cube
+/// seated on such a cube then read as above it, not touching, and fell
+/// freely for a step into it (docs/bullet-corrections.md).
 /// `box` must have no polyhedron yet.
 void initializeExactBoxFeatures(btBoxShape& box);
 

@@ -27,8 +27,8 @@ namespace tabletop {
 /// matrix non-symmetric, and solved by an LU factorization without row
 /// exchanges. Friction bounds hang on the normals, though, and where a
 /// point slips a sticking answer can exist beside the sliding one,
-/// pressing the bodies together harder (a 5 kg cone pushed at 4.8 m/s over
-/// a 51 g box: normal impulses seven times Dantzig's, 0.3 J gained). So a
+/// pressing the bodies together harder and gaining energy (a heavy cone
+/// pushed fast over a light box). So a
 /// sliding row is never made to stick: a problem whose answer would turn a
 /// slip round, a guess that does not settle, or a non-positive pivot goes
 /// to `fallback` (Dantzig's pivoting). Where both answer, they agree on
@@ -66,9 +66,9 @@ class ActiveSetSolver : public btMLCPSolverInterface {
 
   /// The guess alone, a sliding row whose answer would turn its slip round
   /// made to stick: for a problem the fallback failed on (a cube spun on
-  /// the table whose spin stops inside a scene's first step at 30 Hz
-  /// left Dantzig's pivoting failing twice, and ten sweeps left it
-  /// creeping 5 um). False if the guess does not settle.
+  /// the table whose spin stops inside a scene's first step left Dantzig's
+  /// pivoting failing twice, and sweeps left it creeping). False if the
+  /// guess does not settle.
   bool solveStickingTurns(const btMatrixXu& A, const btVectorXu& b, btVectorXu& x, const btVectorXu& lo,
                           const btVectorXu& hi, const btAlignedObjectArray<int>& limitDependency,
                           const RowBodies* rowBodies);

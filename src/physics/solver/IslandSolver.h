@@ -32,15 +32,12 @@ struct IslandSolverParts {
 /// that carry a load (a body resting on another, where sweeps pass the
 /// weight down too slowly; one with more rows gets the long sweeps below)
 /// or slide on a touching point (where sweeps let
-/// friction shift the load between the points unevenly: a cube with
-/// mu = 0.9 slid 29 mm short and turned 4 degrees) and sweeps the rest.
+/// friction shift the load between the points unevenly, and a sliding cube
+/// stopped short and turned) and sweeps the rest.
 /// A ball's point (against a ball or something that does not move) slides
 /// without pivoting: its rows do not act on each other, one sweep solves
-/// them exactly, and pivoting only cost (a ball rolling off the table took
-/// 1.26 times the instructions). Nor does a frictionless one, which has no
-/// friction to shift the load (a cube gliding off a frictionless table:
-/// 13% fewer instructions, its tip 0.010 mm from the edge at 60 Hz instead
-/// of 0.007). An island the pivoting fails on twice (kRetryRaise)
+/// them exactly, and pivoting only cost. Nor does a frictionless one, which
+/// has no friction to shift the load. An island the pivoting fails on twice (kRetryRaise)
 /// is swept (Bullet's own fallback). The push out of penetration
 /// (split impulse) is pivoted on the normal rows alone; should that fail,
 /// the step keeps its exact velocities and pushes nothing out.
@@ -49,8 +46,8 @@ struct IslandSolverParts {
 /// friction row, across the first, if it could stick within the step (its
 /// slip at most mu g dt); a sliding point has only the row along its slip.
 /// Bullet's one row meant a body at rest had friction along one arbitrary
-/// axis and none across it (a 1 kg cube under a 1000 kg one crept across
-/// it, its drift doubling every second), and a second row on a sliding
+/// axis and none across it (a light cube under a heavy one crept across
+/// it, its drift growing every second), and a second row on a sliding
 /// point turned a sliding cube. Swept islands keep Bullet's one row: the
 /// sweeps did not settle a cylinder standing on the table with two (it
 /// jiggled at 3e-5 m/s).
@@ -101,14 +98,14 @@ class IslandSolver : private IslandSolverParts, public btMLCPSolver {
   }
 
   /// The compliance on every row of an island solved exactly (Bullet's
-  /// global CFM): measured on a 100:1 stack at 240 Hz,
-  /// 1e-8 lets it sink by nothing measurable, 1e-6 by 0.25 mm/s.
+  /// global CFM): small enough that a heavy stack on a light base does not
+  /// sink measurably (docs/hard-cases.md).
   static constexpr double kDirectCfm = 1e-8;
   /// Dantzig's pivoting can fail on a problem that is nearly degenerate (the
   /// points of a face resting on a face carry redundant rows): a change of
   /// 1e-15 in one friction direction decided between success and failure
   /// for a truncated cone riding a cube, and the failed step, swept, set it
-  /// rocking (1.3 mm off at 30 Hz). A failed island is pivoted once more
+  /// rocking. A failed island is pivoted once more
   /// with each diagonal entry raised by this share of itself, and swept only
   /// if that fails too.
   static constexpr double kRetryRaise = 1e-9;
@@ -116,8 +113,8 @@ class IslandSolver : private IslandSolverParts, public btMLCPSolver {
   /// the pivoting takes (`auto`): at most this many, ending early once a
   /// sweep changes no row by more than kLongSweepTolerance (m/s), in
   /// steps of at most kLongSweepStep (s). Measured on the 55-cube pyramid
-  /// (docs/hard-cases.md): at 60 Hz sweeps do not hold it at any count
-  /// (1.8 m drift at 1000), at 120 Hz 200 hold it to 2.6 mm.
+  /// (docs/hard-cases.md): at 60 Hz sweeps do not hold it at any count;
+  /// in parts of 1/120 s, 200 do.
   static constexpr int kLongSweeps = 200;
   static constexpr double kLongSweepTolerance = 1e-7;
   static constexpr double kLongSweepStep = 1.0 / 120.0;

@@ -146,8 +146,8 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   // The closing speed, m/s, above which a point that stops a body counts
   // as stopping it at once: a tenth of what smooth forces give in a step,
   // above a resting contact's rounding. A point closing just under it
-  // moves by the body's mean velocity and can go this times dt / 2 in
-  // (0.31 mm at 60 Hz); lower thresholds let the pyramid's sweeps drift
+  // moves by the body's mean velocity and can go this times dt / 2 in;
+  // lower thresholds let the pyramid's sweeps drift
   // (docs/bullet-corrections.md, "Left").
   double stopSpeed() const { return 0.1 * smoothAcceleration_ * stepLength_; }
 

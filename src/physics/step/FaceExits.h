@@ -17,8 +17,8 @@ namespace tabletop {
 /// A part's contacts are found at its start and the solver holds them for
 /// the whole part, so a body whose centre passed the edge inside a part
 /// stayed carried to the part's end: a cube began to tip, a ball to fall,
-/// up to a part's travel late (a ball at 2 m/s landed up to 17 mm long at
-/// 60 Hz, depending on where in a step it met the edge). The part is now
+/// up to a part's travel late (a ball landed long, by where in a step it
+/// met the edge). The part is now
 /// cut where the centre reaches the edge (DynamicsWorld), and a ball's row
 /// at an edge counts the curvature of its path about it.
 
@@ -65,7 +65,7 @@ double earliestFaceExit(btDispatcher& dispatcher, double horizon, PointBoxes& bo
 /// centre's distance from the edge (or the other centre). Without it a
 /// ball leaving the edge faster than sqrt(g R) was held up for a part, and
 /// two balls meeting obliquely were slowed before they touched and pressed
-/// together after an inelastic impact (5e-4 m/s at 55 degrees). Each such
+/// together after an inelastic impact. Each such
 /// point's gap is raised by that growth over the part (and, with
 /// `meanVelocity`, for positions that follow the mean of the part's
 /// velocities), but for a point striking now (strikesNow), which the
@@ -80,7 +80,7 @@ void holdEdgeCurvature(btDispatcher& dispatcher, double length, double stepLengt
 /// moves across it, so its lever about the body's centre changes within
 /// the part; the solver takes it from the part's start, where a cube whose
 /// centre has just reached the edge is held level for the whole part, and
-/// its tip lagged by half a part (0.49 mm at 60 Hz). Each such point, on
+/// its tip lagged by half a part. Each such point, on
 /// the carried body's side, is moved back by half the part's motion across
 /// the edge: to where it is, relative to the body, at mid-part. `saved`
 /// gets the points and their places, to be put back after the solve.

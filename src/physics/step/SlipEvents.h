@@ -21,10 +21,10 @@ namespace tabletop {
 /// friction for the whole part, the one of its end: a slip that turned
 /// round inside it had the end's friction all through. The rider of
 /// scenarios/analytic/stack_rider_slips lost twice mu g times the time
-/// before the turn, 26 mm/s at 60 Hz, and ended 1.3 mm short; the error
-/// fell only as fast as the step. Likewise a slip that stopped inside a
+/// before the turn and ended short; the error fell only as fast as the
+/// step. Likewise a slip that stopped inside a
 /// part was held still all through it. The part is now cut where the slip
-/// reaches zero and solved again (DynamicsWorld).
+/// reaches zero and solved again (PartSolve.cpp).
 
 /// A point whose bodies slide over each other at a part's start.
 struct Slip {
@@ -44,7 +44,7 @@ void slippingPoints(btDispatcher& dispatcher, double g, double length, double sh
 /// cut at. A lone body's velocity stays from where its slip stops, which
 /// DynamicsWorld's slip share already places exactly; cut there, a
 /// standing cylinder was left rocking on its rim by the sweeps of the part
-/// after (0.016 degrees of turn at 30 Hz). Found before the solve, so a
+/// after. Found before the solve, so a
 /// part with none is not saved to be solved again. Written to `out`;
 /// `touching` is scratch (the bodies touching another moving body, found
 /// in one pass over the manifolds, so the cost is slips plus manifolds).
