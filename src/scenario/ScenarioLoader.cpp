@@ -49,6 +49,7 @@ Scenario read(const json& root, std::vector<Problem>& problems) {
   }
 
   NameIndex names;
+  NameIndex normalised;  // each name in Unicode NFC: equal ones are the same name
   if (const json* list = f.get("entities", true)) {
     if (!list->is_array() || list->empty()) {
       f.fail("/entities", "expected a non-empty array of entities, got " + shown(*list));
@@ -65,7 +66,16 @@ Scenario read(const json& root, std::vector<Problem>& problems) {
         const auto base = names.find(e.on.entityName());
         if (base != names.end() && sized[base->second]) checkOverBase(e, s.entities[base->second], problems);
         sized.push_back(hasSize);
-        if (!e.name.empty()) names.emplace(e.name, s.entities.size());
+        if (!e.name.empty()) {
+          const auto same = normalised.emplace(nfc(e.name), s.entities.size());
+          if (!same.second && !names.count(e.name)) {
+            f.fail(e.path + "/name", "expected a unique name, but " + quotedName(e.name) + " is " +
+                                         quotedName(s.entities[same.first->second].name) +
+                                         " (/entities/" + std::to_string(same.first->second) +
+                                         ") in Unicode normalization form C");
+          }
+          names.emplace(e.name, s.entities.size());
+        }
         s.entities.push_back(std::move(e));
       }
     }
