@@ -24,7 +24,7 @@ CLI::App* addScenarioCommand(CLI::App& app, const std::string& name, const std::
   command
       ->add_option_function<std::string>(
           "SCENARIO", [&run](const std::string& file) { run.scenarios.push_back({file, std::nullopt}); },
-          "Scenario file (JSON)")
+          "Scenario file (JSON), a pipe, or - for standard input")
       ->required();
   tabletop::addRunOptions(*command, run, withMode);
   return command;
@@ -46,7 +46,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> files;
   CLI::App* runCommand = app.add_subcommand(
       "run", "Run scenario files headless and print each entity's final state and the events");
-  runCommand->add_option("SCENARIO", files, "Scenario files (JSON)")->required();
+  runCommand->add_option("SCENARIO", files, "Scenario files (JSON), pipes, or - for standard input")->required();
   addRunOptions(*runCommand, run);
   runCommand->add_option("--out", run.outFile,
                          "Write the output to FILE instead of standard output (whole or not at all)");
