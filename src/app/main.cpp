@@ -1,5 +1,6 @@
 // tabletop: runs the report's scenes in Bullet from the command line.
 
+#include <csignal>
 #include <exception>
 #include <iostream>
 
@@ -34,6 +35,11 @@ CLI::App* addScenarioCommand(CLI::App& app, const std::string& name, const std::
 
 int main(int argc, char** argv) {
   using namespace tabletop;
+  // A file size limit (ulimit -f) makes a write past it fail, as a full
+  // disk does, instead of killing tabletop with a temporary left behind:
+  // every output then fails whole, with its reason (and gnuplot and ffmpeg
+  // inherit the same).
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{
       "tabletop: the table-top scenes of S. Zou's report \"The Design of a 3D-Object Simulator\n"
       "Using Open-GL\" (Concordia, 2001) simulated with Bullet rigid-body physics."};
