@@ -216,5 +216,20 @@ TEST(FallOntoFalling, TheSecondOfTwoEndsOnTheFirstsTop) {
   EXPECT_NEAR(run.entities[0].position.y, 0.05, kExact);
 }
 
+// Compat hands a body past the table's edge to full physics, where it
+// falls onto one that fell before it. Its drop ends there too: every cube
+// ends FinishDropSimulation and the run at rest, long before its duration.
+TEST(FallOntoFalling, InCompatADropOntoADroppedBodyEnds) {
+  Row r{{0.1, 0.1, 0.1, 0.1}, {0.0, 0.02, 0.02, 0.02}, 0.05, 0.5, 1, false};
+  const RunResult run = test::runScene(scene(r), SimulationMode::Compat);
+  EXPECT_LT(run.simTime, 5.0);
+  bool onACube = false;
+  for (const EntityState& e : run.entities) {
+    EXPECT_EQ(e.status, EntityPositionStatus::FinishDropSimulation) << e.name;
+    onACube = onACube || e.support.kind() == Support::Kind::Entity;
+  }
+  EXPECT_TRUE(onACube);
+}
+
 }  // namespace
 }  // namespace tabletop
