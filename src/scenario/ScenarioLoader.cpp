@@ -73,10 +73,10 @@ Scenario read(const json& root, std::vector<Problem>& problems) {
         if (!e.name.empty()) {
           const auto same = normalised.emplace(nfc(e.name), s.entities.size());
           if (!same.second && !names.count(e.name)) {
-            f.fail(e.path + "/name", "expected a unique name, but " + quotedName(e.name) + " is " +
+            f.fail(e.path + "/name", "expected a unique name, but " + quotedName(e.name) + " is the same name as " +
                                          quotedName(s.entities[same.first->second].name) +
                                          " (/entities/" + std::to_string(same.first->second) +
-                                         ") in Unicode normalization form C");
+                                         ") in Unicode normalization form C (NFC)");
           }
           names.emplace(e.name, s.entities.size());
         }

@@ -275,7 +275,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"NamesEqualInNfc", R"({"version": 1, "name": "t", "entities": [
                    {"name": "caf\u00e9", "shape": "cube", "size": 0.1, "position": [-0.3, 0], "mass": 1},
                    {"name": "cafe\u0301", "shape": "cube", "size": 0.1, "position": [0.3, 0], "mass": 1}]})",
-                 "/entities/1/name", "is 'caf\u00e9' (/entities/0) in Unicode normalization form C"},
+                 "/entities/1/name", "is the same name as 'caf\u00e9' (/entities/0) in Unicode normalization form C (NFC)"},
         BadInput{"NameTooLong", entity("").replace(entity("").find("\"A\""), 3, "\"" + std::string(65, 'n') + "\""),
                  "/entities/0/name", "expected at most 64 bytes, got 65"},
         BadInput{"ScenarioNameWithCarriageReturn", R"({"version": 1, "name": "t\r", "entities": [{"name": "A",
