@@ -26,6 +26,15 @@ std::filesystem::path base() {
   return ec ? std::filesystem::path("/tmp") : dir;
 }
 
+// Renames `from` to `to` unless `to` exists (a file system without
+// RENAME_NOREPLACE checks first, which leaves a moment's race).
+bool renameNew(const std::string& from, const std::string& to) {
+  if (::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_NOREPLACE) == 0) return true;
+  if (errno != EINVAL && errno != ENOSYS) return false;
+  struct stat info {};
+  return ::lstat(to.c_str(), &info) != 0 && errno == ENOENT && ::rename(from.c_str(), to.c_str()) == 0;
+}
+
 }  // namespace
 
 TemporaryFolder::TemporaryFolder(const std::string& prefix) {
@@ -37,8 +46,7 @@ TemporaryFolder::TemporaryFolder(const std::string& prefix) {
     }
     const int fd = ::open(pattern.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     const std::string final = (dir / (prefix + pattern.substr(pattern.size() - 6))).string();
-    if (fd >= 0 && ::flock(fd, LOCK_EX | LOCK_NB) == 0 &&
-        ::renameat2(AT_FDCWD, pattern.c_str(), AT_FDCWD, final.c_str(), RENAME_NOREPLACE) == 0) {
+    if (fd >= 0 && ::flock(fd, LOCK_EX | LOCK_NB) == 0 && renameNew(pattern, final)) {
       path_ = final;
       lock_ = fd;
       break;

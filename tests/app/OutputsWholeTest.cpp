@@ -172,11 +172,12 @@ TEST(OutputsWhole, TheNextRenderRemovesAKilledRendersFrames) {
 TEST(OutputsWhole, SigtermWhileEncodingKeepsThePreviousVideo) {
   const TempFolder folder("whole_encode");
   const std::string& dir = folder.path();
+  const TempFolder tmp("whole_encode_tmp");
   const std::string video = dir + "/v.gif";
   std::ofstream(video) << "previous";
   const pid_t pid = startLimited({"render", kScenarios + "example2_two_cubes.json", "--video", video, "--size",
                                   "240x180", "--fps", "200"},
-                                 dir + "/err.txt", 0);
+                                 dir + "/err.txt", 0, tmp.path());
   // The video's temporary appears when the encoding starts.
   bool encoding = false;
   for (int i = 0; i < 6000 && !encoding; ++i) {
@@ -191,6 +192,7 @@ TEST(OutputsWhole, SigtermWhileEncodingKeepsThePreviousVideo) {
   EXPECT_EQ(contentOf(video), "previous");
   EXPECT_TRUE(filesIn(dir, ".part").empty());
   EXPECT_TRUE(filesIn(dir, ".log").empty());
+  EXPECT_TRUE(std::filesystem::is_empty(tmp.path()));
 }
 
 }  // namespace
