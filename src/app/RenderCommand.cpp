@@ -209,6 +209,13 @@ int renderScenario(const RenderOptions& options, std::ostream& out, std::ostream
     err << "tabletop render: --keep-frames: expected --out-dir DIR to keep them in\n";
     return kExitBadInput;
   }
+  // The frames' folder is named in every frame's path: printable, as every
+  // output's name (io/AtomicFile.h), checked before it is made.
+  if (const auto unprintable = unprintableProblem(options.outDir)) {
+    err << "tabletop render: --out-dir: '" << shownText(options.outDir, 256) << "': expected a printable folder name, got "
+        << *unprintable << "\n";
+    return kExitBadInput;
+  }
   if (options.video) {
     if (const auto problem = videoNameProblem(*options.video)) {
       err << "tabletop render: " << *problem << "\n";

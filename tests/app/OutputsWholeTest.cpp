@@ -95,6 +95,13 @@ TEST(OutputsWhole, OutputNamesMustBePrintable) {
     o = runArgs({"run", example, "--out", dir + "/" + bad + ".txt"});
     EXPECT_EQ(o.status, 1) << o.err;
     EXPECT_NE(o.err.find("expected a printable file name"), std::string::npos) << o.err;
+    o = runArgs({"render", example, "--video", dir + "/" + bad + ".gif"});
+    EXPECT_EQ(o.status, 2) << o.err;
+    EXPECT_NE(o.err.find("expected a printable file name"), std::string::npos) << o.err;
+    o = runArgs({"render", example, "--out-dir", dir + "/" + bad, "--at", "0"});
+    EXPECT_EQ(o.status, 2) << o.err;
+    EXPECT_NE(o.err.find("expected a printable folder name"), std::string::npos) << o.err;
+    EXPECT_EQ(lineCount(o.err), 1) << o.err;
   }
   EXPECT_TRUE(std::filesystem::is_empty(dir));
 }
