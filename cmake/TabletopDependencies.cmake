@@ -6,6 +6,8 @@ include(TabletopBullet)
 
 find_package(nlohmann_json 3.10 CONFIG REQUIRED)
 find_package(CLI11 CONFIG REQUIRED)
+# utf8proc, as Tabletop::utf8proc (its own file, like Bullet's).
+include(TabletopUtf8proc)
 
 # Rendering: libpng for images; OpenGL headers, freeglut and X11 for the
 # window; OSMesa (pkg-config) for headless frames (see src/headless).

@@ -41,4 +41,4 @@ configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/tabletopConfig.cmake.i
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/tabletopConfigVersion.cmake
   COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/tabletopConfig.cmake ${PROJECT_BINARY_DIR}/tabletopConfigVersion.cmake
-  ${PROJECT_SOURCE_DIR}/cmake/TabletopBullet.cmake DESTINATION ${TABLETOP_PACKAGE_DIR})
+  ${PROJECT_SOURCE_DIR}/cmake/TabletopBullet.cmake ${PROJECT_SOURCE_DIR}/cmake/TabletopUtf8proc.cmake DESTINATION ${TABLETOP_PACKAGE_DIR})

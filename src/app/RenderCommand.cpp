@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <iostream>
 #include <limits>
+#include <optional>
 #include <iomanip>
 #include <regex>
 #include <sstream>
@@ -40,6 +41,8 @@ constexpr double kTimeSlack = 1e-9;
 constexpr double kHoldSeconds = 0.5;
 // The most frames one render writes.
 constexpr double kMaxFrames = 100000;
+// The private folders of frames nobody asked to keep (io/TemporaryFolder.h).
+constexpr const char* kFramesPrefix = "tabletop-frames-";
 
 std::string stillName(double t) {
   std::ostringstream name;
@@ -206,6 +209,13 @@ int renderScenario(const RenderOptions& options, std::ostream& out, std::ostream
     err << "tabletop render: --keep-frames: expected --out-dir DIR to keep them in\n";
     return kExitBadInput;
   }
+  // The frames' folder is named in every frame's path: printable, as every
+  // output's name (io/AtomicFile.h), checked before it is made.
+  if (const auto unprintable = unprintableProblem(options.outDir)) {
+    err << "tabletop render: --out-dir: '" << shownText(options.outDir, 256) << "': expected a printable folder name, got "
+        << *unprintable << "\n";
+    return kExitBadInput;
+  }
   if (options.video) {
     if (const auto problem = videoNameProblem(*options.video)) {
       err << "tabletop render: " << *problem << "\n";
@@ -245,12 +255,16 @@ int renderScenario(const RenderOptions& options, std::ostream& out, std::ostream
     return kExitBadInput;
   }
 
-  // Frames nobody asked to keep go to a private folder removed at the end.
+  // Frames nobody asked to keep go to a private folder removed at the end;
+  // those of renders killed before they could remove theirs go first.
+  for (const std::string& left : TemporaryFolder::removeAbandoned(kFramesPrefix)) {
+    err << "tabletop render: removed " << shownText(left, 1024) << ", the frames of a killed render\n";
+  }
   std::unique_ptr<TemporaryFolder> scratch;
   std::string frameDir = options.outDir;
   if (frameDir.empty()) {
     try {
-      scratch = std::make_unique<TemporaryFolder>("tabletop-frames-");
+      scratch = std::make_unique<TemporaryFolder>(kFramesPrefix);
     } catch (const std::runtime_error& e) {
       err << "tabletop render: " << e.what() << "\n";
       return kExitFailure;
@@ -270,9 +284,11 @@ int renderScenario(const RenderOptions& options, std::ostream& out, std::ostream
   const std::filesystem::path dir(frameDir);
   // One render at a time writes into a folder: the lock on the folder is
   // the kernel's, so it goes with a render that is killed, and what is
-  // left then can only be a killed render's.
-  const FolderLock lock(frameDir);
-  if (!lock.held()) {
+  // left then can only be a killed render's. A private folder holds its
+  // own lock.
+  std::optional<FolderLock> lock;
+  if (!scratch) lock.emplace(frameDir);
+  if (lock && !lock->held()) {
     err << "tabletop render: --out-dir: another render is writing into '" << shownText(frameDir) << "'\n";
     return kExitFailure;
   }
@@ -337,7 +353,15 @@ int renderScenario(const RenderOptions& options, std::ostream& out, std::ostream
       encoding.start(frames);
       const std::string what = "encoding " + shownText(*options.video);
       problem = encodeVideo((dir / "frame_%05d.png").string(), options.fps, *options.video,
-                            [&encoding, &what](long done) { encoding.set(done, what); });
+                            [&encoding, &what](long done) { encoding.set(done, what); },
+                            [&interrupt] { return interrupt.requested(); });
+    }
+    // Ctrl-C reaches ffmpeg too, SIGTERM only tabletop: either way the
+    // video is left as it was, the last whole one.
+    if (interrupt.requested()) {
+      err << "tabletop render: interrupted while encoding; " << shownText(*options.video)
+          << " left as it was" << (options.outDir.empty() ? "" : "; the frames are in " + shownDir) << "\n";
+      return kExitInterrupted;
     }
     if (problem) {
       err << "tabletop render: " << *problem << (options.outDir.empty() ? "" : "; the frames are in " + shownDir)

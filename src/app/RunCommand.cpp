@@ -12,6 +12,7 @@
 #include "app/InterruptGuard.h"
 #include "app/Progress.h"
 #include "app/OptionChecks.h"
+#include "core/Text.h"
 #include "io/AtomicFile.h"
 #include "scenario/ScenarioError.h"
 #include "scenario/ScenarioLoader.h"
@@ -108,6 +109,12 @@ int runScenarios(const RunOptions& options, std::ostream& out, std::ostream& err
       err << "tabletop run: " << flag << ": " << problem << "\n";
       return kExitFailure;
     }
+  }
+  // Both into one file would leave only the one renamed into place last.
+  if (options.outFile && options.traceFile && AtomicFile::sameFile(*options.outFile, *options.traceFile)) {
+    err << "tabletop run: --out and --trace name the same file ('" << shownText(*options.outFile) << "', '"
+        << shownText(*options.traceFile) << "'); expected two files\n";
+    return kExitBadInput;
   }
   const InterruptGuard interrupt;
   std::vector<RunResult> results;

@@ -1,5 +1,6 @@
 // tabletop: runs the report's scenes in Bullet from the command line.
 
+#include <csignal>
 #include <exception>
 #include <iostream>
 
@@ -24,7 +25,7 @@ CLI::App* addScenarioCommand(CLI::App& app, const std::string& name, const std::
   command
       ->add_option_function<std::string>(
           "SCENARIO", [&run](const std::string& file) { run.scenarios.push_back({file, std::nullopt}); },
-          "Scenario file (JSON)")
+          "Scenario file (JSON), a pipe, or - for standard input")
       ->required();
   tabletop::addRunOptions(*command, run, withMode);
   return command;
@@ -34,6 +35,11 @@ CLI::App* addScenarioCommand(CLI::App& app, const std::string& name, const std::
 
 int main(int argc, char** argv) {
   using namespace tabletop;
+  // A file size limit (ulimit -f) makes a write past it fail, as a full
+  // disk does, instead of killing tabletop with a temporary left behind:
+  // every output then fails whole, with its reason (and gnuplot and ffmpeg
+  // inherit the same).
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{
       "tabletop: the table-top scenes of S. Zou's report \"The Design of a 3D-Object Simulator\n"
       "Using Open-GL\" (Concordia, 2001) simulated with Bullet rigid-body physics."};
@@ -46,7 +52,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> files;
   CLI::App* runCommand = app.add_subcommand(
       "run", "Run scenario files headless and print each entity's final state and the events");
-  runCommand->add_option("SCENARIO", files, "Scenario files (JSON)")->required();
+  runCommand->add_option("SCENARIO", files, "Scenario files (JSON), pipes, or - for standard input")->required();
   addRunOptions(*runCommand, run);
   runCommand->add_option("--out", run.outFile,
                          "Write the output to FILE instead of standard output (whole or not at all)");

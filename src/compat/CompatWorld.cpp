@@ -59,18 +59,25 @@ void CompatWorld::step() {
   mergeEvents();
 }
 
-// A released body's drop ends once it has landed: held up by the ground
-// and not moving up or down for kLandedWindow. A ball may roll on along the
-// floor under physics; the rules have no floor to roll on, and the script
-// does not wait for it.
+// A released body's drop ends once it has landed: held up by the ground,
+// or by a released body whose drop has ended (one fell onto another, report
+// 3.4), and not moving up or down for kLandedWindow. A ball may roll on
+// along the floor under physics; the rules have no floor to roll on, and
+// the script does not wait for it.
 void CompatWorld::observeReleased() {
   const auto& shapes = world_->entities();
   const double now = engine_->time();
+  const auto heldUp = [&](const Support& support) {
+    if (support == Support::ground()) return true;
+    for (std::size_t k = 0; k < shapes.size(); ++k) {
+      if (settled_[k] && support == Support::entity(shapes[k]->name())) return true;
+    }
+    return false;
+  };
   for (std::size_t i = 0; i < shapes.size(); ++i) {
     if (!engine_->released(i) || settled_[i]) continue;
     const Shape& shape = *shapes[i];
-    const bool landed = shape.support() == Support::ground() &&
-                        std::abs(shape.body()->getLinearVelocity().y()) < kLandedSpeed;
+    const bool landed = heldUp(shape.support()) && std::abs(shape.body()->getLinearVelocity().y()) < kLandedSpeed;
     if (!landed) {
       landedSince_[i] = -1.0;
       continue;

@@ -20,7 +20,8 @@ namespace tabletop {
 /// table edge it is released: it becomes a dynamic body again, with the
 /// velocity it had, and falls under full physics to the ground; its drop
 /// ends (FinishDropSimulation) once it has landed there: held up by the
-/// ground and still vertically for 0.1 s. (A ball may then roll on along
+/// ground, or by a released body whose drop has ended, and still
+/// vertically for 0.1 s. (A ball may then roll on along
 /// the floor; the rules have no floor to roll on.) A rider pushed off its base falls by the rules (the report's
 /// straight drop onto the table); only table edges hand bodies to physics.
 class CompatWorld : public Simulation, private rules::ReleaseHandler {

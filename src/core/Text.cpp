@@ -1,6 +1,10 @@
 #include "core/Text.h"
 
 #include <cstdio>
+#include <cstdlib>
+#include <memory>
+
+#include <utf8proc.h>
 
 namespace tabletop {
 namespace {
@@ -43,10 +47,24 @@ unsigned codePoint(std::string_view s, std::size_t i, std::size_t n) {
   return cp;
 }
 
-bool isControl(unsigned cp) {
-  return cp < 0x20 || (cp >= 0x7F && cp <= 0x9F) || (cp >= 0x202A && cp <= 0x202E) ||
-         (cp >= 0x2066 && cp <= 0x2069);
+// What kind of unprintable character `cp` is, by its Unicode general
+// category, or null when it is printable: controls (Cc), format marks (Cf:
+// zero-width, direction and joining marks, U+FEFF), line and paragraph
+// separators (Zl, Zp), surrogates (Cs) and unassigned code points (Cn). A
+// terminal may show them as other text than the bytes hold, or as nothing.
+const char* unprintableKind(unsigned cp) {
+  switch (utf8proc_category(static_cast<utf8proc_int32_t>(cp))) {
+    case UTF8PROC_CATEGORY_CC: return "a control character";
+    case UTF8PROC_CATEGORY_CF: return "a format character (invisible, or a direction mark)";
+    case UTF8PROC_CATEGORY_ZL: return "a line separator";
+    case UTF8PROC_CATEGORY_ZP: return "a paragraph separator";
+    case UTF8PROC_CATEGORY_CS:
+    case UTF8PROC_CATEGORY_CN: return "an unassigned code point";
+    default: return nullptr;
+  }
 }
+
+bool isControl(unsigned cp) { return unprintableKind(cp) != nullptr; }
 
 std::string hexByte(unsigned char c) {
   char buffer[8];
@@ -61,14 +79,25 @@ std::optional<std::string> unprintableProblem(std::string_view s) {
     const std::size_t n = sequenceLength(s, i);
     if (n == 0) return "invalid UTF-8 at byte " + std::to_string(i);
     const unsigned cp = codePoint(s, i, n);
-    if (isControl(cp)) {
+    if (const char* kind = unprintableKind(cp)) {
       char buffer[16];
       std::snprintf(buffer, sizeof buffer, "U+%04X", cp);
-      return std::string("a control character (") + buffer + ") at byte " + std::to_string(i);
+      return std::string(kind) + " (" + buffer + ") at byte " + std::to_string(i);
     }
     i += n;
   }
   return std::nullopt;
+}
+
+std::string nfc(std::string_view s) {
+  // utf8proc allocates the result with malloc; invalid UTF-8 stays as it is.
+  utf8proc_uint8_t* out = nullptr;
+  const auto n = utf8proc_map(reinterpret_cast<const utf8proc_uint8_t*>(s.data()),
+                              static_cast<utf8proc_ssize_t>(s.size()), &out,
+                              static_cast<utf8proc_option_t>(UTF8PROC_STABLE | UTF8PROC_COMPOSE));
+  if (n < 0) return std::string(s);
+  const std::unique_ptr<utf8proc_uint8_t, decltype(&std::free)> owned(out, &std::free);
+  return std::string(reinterpret_cast<const char*>(out), static_cast<std::size_t>(n));
 }
 
 std::string shownText(std::string_view s, std::size_t maxBytes) {

@@ -12,10 +12,16 @@ namespace tabletop {
 /// also hold for command-line text that was never checked.
 
 /// Why `s` is not a printable name, or nothing: it must be valid UTF-8 with
-/// no control character (C0, DEL, C1) and no bidirectional override
-/// (U+202A-U+202E, U+2066-U+2069), which can make a terminal show other
-/// text than the bytes hold.
+/// no character of the Unicode categories Cc (C0, DEL, C1), Cf (zero-width,
+/// direction and joining marks such as U+200B-U+200F, U+202A-U+202E,
+/// U+2066-U+2069, U+061C, U+FEFF), Zl, Zp (U+2028, U+2029), Cs or Cn
+/// (unassigned), which can make a terminal show other text than the bytes
+/// hold, or nothing at all.
 std::optional<std::string> unprintableProblem(std::string_view s);
+
+/// `s` in Unicode normalization form C: two names that are equal so are
+/// the same name. Invalid UTF-8 is returned as it is.
+std::string nfc(std::string_view s);
 
 /// `s` made safe to print on one line: control bytes and bytes of invalid
 /// UTF-8 as \xNN, cut after `maxBytes` bytes with "..." (and how many

@@ -21,7 +21,8 @@ std::optional<std::string> videoNameProblem(const std::string& out) {
 bool ffmpegAvailable() { return programAvailable("ffmpeg"); }
 
 std::optional<std::string> encodeVideo(const std::string& framePattern, double fps, const std::string& out,
-                                       const std::function<void(long frames)>& progress) {
+                                       const std::function<void(long frames)>& progress,
+                                       const std::function<bool()>& stop) {
   // Every argument is one argv entry: a frame or video name is never parsed
   // by a shell. "-i" names the frames by a pattern ffmpeg expands itself.
   std::vector<std::string> args{"ffmpeg", "-nostdin", "-y", "-loglevel", "error", "-framerate", std::to_string(fps),
@@ -55,10 +56,12 @@ std::optional<std::string> encodeVideo(const std::string& framePattern, double f
     }
     if (frames >= 0) progress(frames);
   };
-  const int status = runProgram(args, "", log, progress ? std::function<void()>(report) : std::function<void()>());
+  const int status =
+      runProgram(args, "", log, progress ? std::function<void()>(report) : std::function<void()>(), stop);
   const std::string why = lastLineOf(log);
   std::remove(log.c_str());
   std::remove(progressFile.c_str());
+  if (status == kStopped) return "stopped encoding " + shownText(out) + "; it was left as it was";
   if (status != 0) {
     return "ffmpeg could not encode " + shownText(out) + (why.empty() ? std::string() : ": " + shownText(why, 200));
   }

@@ -17,8 +17,11 @@ bool ffmpegAvailable();
 /// yuv420p) or a .gif (with a palette made from the frames), by running
 /// ffmpeg. Writes a temporary file renamed into place. `progress`, when
 /// given, is told how many frames ffmpeg has encoded, about ten times a
-/// second. Returns an error message, or nothing on success.
+/// second. `stop`, asked as often, ends the encoding when it says true:
+/// ffmpeg is ended and `out` keeps what it held. Returns an error message,
+/// or nothing on success.
 std::optional<std::string> encodeVideo(const std::string& framePattern, double fps, const std::string& out,
-                                       const std::function<void(long frames)>& progress = {});
+                                       const std::function<void(long frames)>& progress = {},
+                                       const std::function<bool()>& stop = {});
 
 }  // namespace tabletop

@@ -11,6 +11,8 @@
 #include <fstream>
 #include <vector>
 
+#include "core/Text.h"
+
 namespace tabletop {
 namespace {
 
@@ -18,6 +20,13 @@ namespace {
 // regular file a link there names; "" with `why` set when that is not a
 // regular file.
 std::string resolve(const std::string& path, std::string& why) {
+  // A name with a control character or another unprintable one (a line
+  // break, an escape, a direction mark) would show as other text in every
+  // message and listing, and may reach gnuplot or ffmpeg: refused.
+  if (const auto unprintable = unprintableProblem(path)) {
+    why = "'" + shownText(path, 256) + "': expected a printable file name, got " + *unprintable;
+    return "";
+  }
   struct stat info {};
   if (::lstat(path.c_str(), &info) != 0) return path;  // a new file
   if (S_ISLNK(info.st_mode)) {
@@ -84,6 +93,20 @@ std::string AtomicFile::destinationProblem(const std::string& path) {
   std::string why;
   resolve(path, why);
   return why;
+}
+
+bool AtomicFile::sameFile(const std::string& a, const std::string& b) {
+  // Two names of one existing file (a link, a hard link, "./F", "d/../F")
+  // have one device and inode; names of files not made yet are compared
+  // as absolute paths with the links of their folders followed.
+  struct stat one {}, two {};
+  if (::stat(a.c_str(), &one) == 0 && ::stat(b.c_str(), &two) == 0) {
+    return one.st_dev == two.st_dev && one.st_ino == two.st_ino;
+  }
+  std::error_code ec1, ec2;
+  const auto pa = std::filesystem::weakly_canonical(std::filesystem::absolute(a, ec1), ec1);
+  const auto pb = std::filesystem::weakly_canonical(std::filesystem::absolute(b, ec2), ec2);
+  return !ec1 && !ec2 && pa == pb;
 }
 
 std::string AtomicFile::write(const std::string& path, const std::string& content) {

@@ -31,9 +31,13 @@ class AtomicFile {
   /// temporary is removed and the destination untouched).
   std::string commit();
 
-  /// "" when `path` may be written (missing, or a regular file, or a link
-  /// to one), else why not: the check commands make before they run.
+  /// "" when `path` may be written (a printable name, missing, or a
+  /// regular file, or a link to one), else why not: the check commands
+  /// make before they run.
   static std::string destinationProblem(const std::string& path);
+  /// Whether `a` and `b` name one file, however spelt (links, "./", "..",
+  /// hard links), so two outputs cannot overwrite each other.
+  static bool sameFile(const std::string& a, const std::string& b);
   /// Writes `content` to `path` this way; "" or what went wrong.
   static std::string write(const std::string& path, const std::string& content);
 

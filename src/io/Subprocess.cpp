@@ -1,6 +1,7 @@
 #include "io/Subprocess.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -16,7 +17,7 @@ extern char** environ;
 namespace tabletop {
 
 int runProgram(const std::vector<std::string>& args, const std::string& input, const std::string& logPath,
-               const std::function<void()>& waiting) {
+               const std::function<void()>& waiting, const std::function<bool()>& stop) {
   std::FILE* in = std::tmpfile();
   if (!in) return -1;
   const bool written = std::fwrite(input.data(), 1, input.size(), in) == input.size() && std::fflush(in) == 0;
@@ -40,15 +41,24 @@ int runProgram(const std::vector<std::string>& args, const std::string& input, c
   std::fclose(in);
   if (started != 0) return 127;
   int status = 0;
+  const bool poll = waiting || stop;
+  int stopTicks = -1;  // tenths of a second since it was asked to end
   for (;;) {
-    const pid_t done = waitpid(pid, &status, waiting ? WNOHANG : 0);
+    const pid_t done = waitpid(pid, &status, poll ? WNOHANG : 0);
     if (done == pid) break;
     if (done < 0 && errno != EINTR) return -1;
     if (done == 0) {
-      waiting();
+      if (waiting) waiting();
+      if (stopTicks < 0 && stop && stop()) {
+        kill(pid, SIGTERM);
+        stopTicks = 0;
+      } else if (stopTicks >= 0 && ++stopTicks == 10) {
+        kill(pid, SIGKILL);
+      }
       usleep(100000);
     }
   }
+  if (stopTicks >= 0) return kStopped;
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 

@@ -113,12 +113,7 @@ RuleEngine::Next RuleEngine::nextEvent(double horizon) const {
     if (m.phase == Phase::Driven || m.phase == Phase::Clearing) {
       consider(make(Next::Kind::DriveEnds, m.remaining / kDriveSpeed, i));
     }
-    if (m.phase == Phase::Falling) {
-      const double drop = b.position.y - m.landingY;
-      const double g = settings_.gravity;
-      const double t = drop <= 0.0 ? 0.0 : (std::sqrt(m.fallSpeed * m.fallSpeed + 2.0 * g * drop) - m.fallSpeed) / g;
-      consider(make(Next::Kind::Lands, t, i));
-    }
+    if (m.phase == Phase::Falling) consider(landing(i));
     if (m.phase != Phase::Driven && m.phase != Phase::Clearing) continue;
     const Vec3 v = ownVelocity(i);
     // Report 3.4: the centre reaching an edge while moving out, whether
@@ -249,7 +244,7 @@ void RuleEngine::handle(const Next& next) {
       startClearing(i, outward);
       break;
     }
-    case Next::Kind::Lands: land(i); break;
+    case Next::Kind::Lands: land(i, next.on); break;
   }
 }
 

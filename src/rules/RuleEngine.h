@@ -46,9 +46,11 @@ class ReleaseHandler {
 /// - A table-supported entity whose centre reaches a table edge stops being
 ///   pushed: status DropFrom...Edge (report 3.4) for it and what it carries.
 ///   It moves on along its direction until its footprint clears the edge,
-///   then falls straight down under gravity to the surface below (the
-///   ground, or a body whose footprint holds its centre); landing on the
-///   ground ends the drop (FinishDropSimulation).
+///   then falls straight down under gravity and lands on the first top it
+///   meets whose footprint holds its centre (report 3.4, 3.8): the table,
+///   the ground, or a body, resting or falling too; found as the fall
+///   goes (landing()). Landing on the ground ends the drop
+///   (FinishDropSimulation).
 /// - A pushed entity resting on another slides across it until its centre
 ///   passes the lower one's edge; it then clears that edge the same way and
 ///   falls onto what is below (the table, or the ground past a table edge).
@@ -87,7 +89,7 @@ class RuleEngine : public Simulation {
     Resting,   // on a surface; moves only with what carries it
     Driven,    // on a surface, moving along `direction` for `remaining` m
     Clearing,  // past an edge, moving on until its footprint clears it
-    Falling,   // straight down under gravity to `landingY`
+    Falling,   // straight down under gravity until it meets a top (landing())
     Released,  // handed to the ReleaseHandler
   };
   struct Motion {
@@ -95,8 +97,6 @@ class RuleEngine : public Simulation {
     Vec3 direction;          // unit, horizontal
     double remaining = 0.0;  // m, along direction
     double fallSpeed = 0.0;  // m/s, downwards
-    double landingY = 0.0;   // centre height on landing
-    int landingOn = kOnGround;
     bool moving = false;     // moved in the last advance (for at-rest events)
   };
   // What stops the current advance.
@@ -108,6 +108,8 @@ class RuleEngine : public Simulation {
     std::size_t other = 0;
     Vec3 normal;
     EntityPositionStatus edge = EntityPositionStatus::OnTable;  // TableEdge: which
+    int on = kOnGround;  // Lands: kOnTable, kOnGround or a body index
+    double top = 0.0;    // Lands: the height of that top now, m (to break ties)
   };
 
   // Bodies whose vertical extents overlap by less than this do not meet
@@ -126,7 +128,9 @@ class RuleEngine : public Simulation {
   void leaveTable(std::size_t i, EntityPositionStatus status);
   void startClearing(std::size_t i, const Vec3& outward);
   void startFall(std::size_t i);
-  void land(std::size_t i);
+  Next landing(std::size_t i) const;
+  bool descends(std::size_t i) const;  // falling, or carried by a falling body
+  void land(std::size_t i, int on);
   std::vector<std::size_t> riders(std::size_t i) const;
   Support supportOf(int support) const;  // a RuleBody's support as a value
   void noteRest();

@@ -1,10 +1,12 @@
 #include "rules/RuleEngine.h"
 
 #include <cmath>
+#include <limits>
+#include <vector>
 
 // Report 3.4 in the rules: a body leaving the table (or its base) moves on
 // until its footprint clears the edge, falls straight down, and lands on
-// the highest surface under its centre.
+// the first top it meets under its centre, which may be falling too.
 namespace tabletop::rules {
 namespace {
 
@@ -54,51 +56,93 @@ void RuleEngine::startClearing(std::size_t i, const Vec3& outward) {
 }
 
 void RuleEngine::startFall(std::size_t i) {
-  RuleBody& b = bodies_[i];
   Motion& m = motion_[i];
-  std::vector<bool> carried(bodies_.size(), false);
-  for (std::size_t r : riders(i)) carried[r] = true;
-  // The highest surface below the centre: the table, a body, or the ground.
-  double surface = 0.0;
-  int on = kOnGround;
+  m.phase = Phase::Falling;
+  m.fallSpeed = 0.0;
+  bodies_[i].support = kOnNothing;
+}
+
+bool RuleEngine::descends(std::size_t i) const {
+  for (int k = static_cast<int>(i); k >= 0; k = bodies_[static_cast<std::size_t>(k)].support) {
+    if (motion_[static_cast<std::size_t>(k)].phase == Phase::Falling) return true;
+  }
+  return false;
+}
+
+// Report 3.4, 3.8: the first top a falling body meets whose footprint holds
+// its centre: the table, the ground, or a body resting, moving or falling
+// too. Asked again at every event and step, as what is below moves (a body
+// under it lands, or is pushed away); a top above its bottom is not met.
+RuleEngine::Next RuleEngine::landing(std::size_t i) const {
+  const RuleBody& b = bodies_[i];
+  const double g = settings_.gravity, v = motion_[i].fallSpeed;
+  Next best;
+  best.kind = Next::Kind::Lands;
+  best.body = i;
+  best.t = std::numeric_limits<double>::infinity();
+  best.top = -std::numeric_limits<double>::infinity();
+  const auto consider = [&best](double t, double top, int on) {
+    if (t < best.t || (t == best.t && top > best.top)) {
+      best.t = t;
+      best.top = top;
+      best.on = on;
+    }
+  };
+  // A top that does not move up or down, at `top`: met after the closed
+  // form of a fall from rest or from speed v.
+  const auto still = [&](double top, int on) {
+    const double drop = b.position.y - (top + b.below);
+    consider(drop <= 0.0 ? 0.0 : (std::sqrt(v * v + 2.0 * g * drop) - v) / g, top, on);
+  };
+  still(0.0, kOnGround);
   const Vec3& c = b.position;
   if (dropStatus(c, edges_) == EntityPositionStatus::OnTable && b.bottom() >= tableTop_ - kLevelSlack) {
-    surface = tableTop_;
-    on = kOnTable;
+    still(tableTop_, kOnTable);
   }
+  std::vector<bool> carried(bodies_.size(), false);
+  for (std::size_t r : riders(i)) carried[r] = true;
   for (std::size_t k = 0; k < bodies_.size(); ++k) {
-    if (k == i || carried[k] || !onSurface(k)) continue;
+    const Phase p = motion_[k].phase;
+    if (k == i || carried[k] || p == Phase::Clearing || p == Phase::Released) continue;
     const RuleBody& o = bodies_[k];
     const double dx = c.x - o.position.x, dz = c.z - o.position.z;
     const bool under = o.round() ? std::hypot(dx, dz) <= o.footX()
                                  : std::abs(dx) <= o.footX() && std::abs(dz) <= o.footZ();
-    if (under && o.top() <= b.bottom() + kLevelSlack && o.top() > surface) {
-      surface = o.top();
-      on = static_cast<int>(k);
+    if (!under || o.top() > b.bottom() + kLevelSlack) continue;
+    if (!descends(k)) {
+      still(o.top(), static_cast<int>(k));
+      continue;
     }
+    // Falling too, under the same gravity: the gap closes at the
+    // difference of the two speeds, if this one is the faster.
+    const double closing = v + velocity(k).y;
+    if (closing > 0.0) consider(std::max(0.0, b.bottom() - o.top()) / closing, o.top(), static_cast<int>(k));
   }
-  m.phase = Phase::Falling;
-  m.fallSpeed = 0.0;
-  m.landingY = surface + b.below;
-  m.landingOn = on;
-  b.support = kOnNothing;
+  return best;
 }
 
-void RuleEngine::land(std::size_t i) {
+// Lands on `on`: seated on its top, its riders moved with it. The drop
+// ends on the ground, or on a body that stays up; on one still falling it
+// ends when that one lands.
+void RuleEngine::land(std::size_t i, int on) {
   RuleBody& b = bodies_[i];
   Motion& m = motion_[i];
-  const double shift = m.landingY - b.position.y;
-  b.position.y = m.landingY;
+  const double top = on == kOnGround ? 0.0 : on == kOnTable ? tableTop_ : bodies_[static_cast<std::size_t>(on)].top();
+  const double landingY = top + b.below;
+  const double shift = landingY - b.position.y;
+  b.position.y = landingY;
   for (std::size_t r : riders(i)) bodies_[r].position.y += shift;
   m.phase = Phase::Resting;
   m.fallSpeed = 0.0;
-  b.support = m.landingOn;
-  if (m.landingOn == kOnGround || isDropping(b.status)) b.status = EntityPositionStatus::FinishDropSimulation;
-  for (std::size_t r : riders(i)) {
-    if (isDropping(bodies_[r].status)) bodies_[r].status = EntityPositionStatus::FinishDropSimulation;
+  b.support = on;
+  if (!descends(i)) {
+    if (on == kOnGround || isDropping(b.status)) b.status = EntityPositionStatus::FinishDropSimulation;
+    for (std::size_t r : riders(i)) {
+      if (isDropping(bodies_[r].status)) bodies_[r].status = EntityPositionStatus::FinishDropSimulation;
+    }
   }
   Event e = eventNow(EventType::Lands, b.name);
-  e.on = supportOf(m.landingOn);
+  e.on = supportOf(on);
   record(e);
 }
 

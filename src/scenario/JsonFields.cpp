@@ -24,8 +24,8 @@ bool inRange(double v, const Range& r) {
 }
 
 // A name as a message quotes it in prose, and as it echoes a value.
-std::string quotedName(const std::string& name) { return "'" + shownText(name, 40) + "'"; }
-std::string quotedValue(const std::string& text) { return "\"" + shownText(text, 40) + "\""; }
+std::string quotedName(const std::string& name) { return "'" + shownText(name, ScenarioLoader::kMaxQuotedBytes) + "'"; }
+std::string quotedValue(const std::string& text) { return "\"" + shownText(text, ScenarioLoader::kMaxQuotedBytes) + "\""; }
 
 // A value as a message shows it: short, on one line, whatever its size.
 std::string shown(const json& j) {
@@ -33,7 +33,8 @@ std::string shown(const json& j) {
   if (j.is_array() && j.size() > 8) return "an array of " + std::to_string(j.size()) + " values";
   if (j.is_object() && j.size() > 8) return "an object of " + std::to_string(j.size()) + " keys";
   std::string s = j.dump();
-  return s.size() > 40 ? s.substr(0, 37) + "..." : s;
+  const std::size_t most = ScenarioLoader::kMaxQuotedBytes;
+  return s.size() > most ? s.substr(0, most - 3) + "..." : s;
 }
 
 }  // namespace tabletop::fields

@@ -1,5 +1,6 @@
 #include "scenario/JsonLocator.h"
 
+#include <algorithm>
 #include <unordered_set>
 
 #include <nlohmann/json.hpp>
@@ -28,16 +29,24 @@ class JsonLocator::Cursor {
   char peek() const { return text_[pos_]; }
   std::size_t pos() const { return pos_; }
   void advance() { ++pos_; }
+  // Steps over a line break at pos_: LF, CR LF, or a lone CR (as old Mac
+  // files end lines), so each is one line whatever the file's convention.
+  void lineBreak() {
+    if (text_[pos_] == '\r' && pos_ + 1 < text_.size() && text_[pos_ + 1] == '\n') ++pos_;
+    ++pos_;
+    ++line_;
+    lineStart_ = pos_;
+  }
+
   std::string_view slice(std::size_t from, std::size_t to) const { return text_.substr(from, to - from); }
   Location location() const { return {line_, static_cast<int>(pos_ - lineStart_) + 1}; }
 
   void skipSpace() {
     while (pos_ < text_.size()) {
       const char c = text_[pos_];
-      if (c == '\n') {
-        newLine(pos_ + 1);
-        ++pos_;
-      } else if (c == ' ' || c == '\t' || c == '\r') {
+      if (c == '\n' || c == '\r') {
+        lineBreak();
+      } else if (c == ' ' || c == '\t') {
         ++pos_;
       } else if (c == '/' && pos_ + 1 < text_.size() && text_[pos_ + 1] == '/') {
         // As nlohmann's parser: a line comment ends at either line break.
@@ -45,8 +54,11 @@ class JsonLocator::Cursor {
       } else if (c == '/' && pos_ + 1 < text_.size() && text_[pos_ + 1] == '*') {
         pos_ += 2;
         while (pos_ + 1 < text_.size() && !(text_[pos_] == '*' && text_[pos_ + 1] == '/')) {
-          if (text_[pos_] == '\n') newLine(pos_ + 1);
-          ++pos_;
+          if (text_[pos_] == '\n' || text_[pos_] == '\r') {
+            lineBreak();
+          } else {
+            ++pos_;
+          }
         }
         pos_ += 2;
       } else {
@@ -70,11 +82,6 @@ class JsonLocator::Cursor {
   }
 
  private:
-  void newLine(std::size_t start) {
-    ++line_;
-    lineStart_ = start;
-  }
-
   std::string_view text_;
   std::size_t pos_ = 0;
   int line_ = 1;
@@ -161,6 +168,19 @@ void JsonLocator::value(Cursor& at, const std::string& pointer) {
     // rather than looping (positions are then only approximate).
     if (at.pos() == before) return;
   }
+}
+
+JsonLocator::Location JsonLocator::locate(std::string_view text, std::size_t offset) {
+  Cursor at(text);
+  offset = std::min(offset, text.size());
+  while (at.pos() < offset) {
+    if (at.peek() == '\n' || at.peek() == '\r') {
+      at.lineBreak();
+    } else {
+      at.advance();
+    }
+  }
+  return at.location();
 }
 
 std::optional<JsonLocator::Location> JsonLocator::tooDeep(std::string_view text, int maxDepth) {

@@ -36,6 +36,9 @@ class JsonLocator {
   /// Every key given twice in one object, in the order of the text.
   const std::vector<Duplicate>& duplicates() const { return duplicates_; }
 
+  /// The line and column of byte `offset` in `text`. A line ends at LF,
+  /// CR LF or a lone CR; a leading byte order mark is not counted.
+  static Location locate(std::string_view text, std::size_t offset);
   /// The first '[' or '{' nested deeper than `maxDepth`, if any.
   static std::optional<Location> tooDeep(std::string_view text, int maxDepth);
   /// The first bare token (a number or a literal, outside strings and

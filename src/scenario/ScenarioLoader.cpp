@@ -8,7 +8,11 @@
 #include <sstream>
 #include <unordered_map>
 
+#include <fcntl.h>
 #include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
 
 #include <nlohmann/json.hpp>
 
@@ -49,6 +53,7 @@ Scenario read(const json& root, std::vector<Problem>& problems) {
   }
 
   NameIndex names;
+  NameIndex normalised;  // each name in Unicode NFC: equal ones are the same name
   if (const json* list = f.get("entities", true)) {
     if (!list->is_array() || list->empty()) {
       f.fail("/entities", "expected a non-empty array of entities, got " + shown(*list));
@@ -65,7 +70,16 @@ Scenario read(const json& root, std::vector<Problem>& problems) {
         const auto base = names.find(e.on.entityName());
         if (base != names.end() && sized[base->second]) checkOverBase(e, s.entities[base->second], problems);
         sized.push_back(hasSize);
-        if (!e.name.empty()) names.emplace(e.name, s.entities.size());
+        if (!e.name.empty()) {
+          const auto same = normalised.emplace(nfc(e.name), s.entities.size());
+          if (!same.second && !names.count(e.name)) {
+            f.fail(e.path + "/name", "expected a unique name, but " + quotedName(e.name) + " is the same name as " +
+                                         quotedName(s.entities[same.first->second].name) +
+                                         " (/entities/" + std::to_string(same.first->second) +
+                                         ") in Unicode normalization form C (NFC)");
+          }
+          names.emplace(e.name, s.entities.size());
+        }
         s.entities.push_back(std::move(e));
       }
     }
@@ -103,14 +117,11 @@ Scenario read(const json& root, std::vector<Problem>& problems) {
   return s;
 }
 
-// The 1-based line and column of a byte offset in `text` (a byte order
-// mark, which the parser skips, is not counted).
+// The 1-based line and column of a byte offset in `text`.
 void locate(Problem& p, const std::string& text, std::size_t offset) {
-  offset = std::min(offset, text.size());
-  std::size_t lineStart = offset == 0 ? 0 : text.rfind('\n', offset - 1) + 1;
-  if (lineStart == 0 && text.compare(0, 3, "\xEF\xBB\xBF") == 0) lineStart = std::min<std::size_t>(3, offset);
-  p.line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + offset, '\n'));
-  p.column = static_cast<int>(offset - lineStart) + 1;
+  const JsonLocator::Location at = JsonLocator::locate(text, offset);
+  p.line = at.line;
+  p.column = at.column;
 }
 
 // What follows nlohmann's "[json.exception.parse_error.101] parse error at
@@ -124,8 +135,24 @@ std::string reason(const std::string& what) {
   return close == std::string::npos ? what : what.substr(close + 2);
 }
 
+// `message` with each value it quotes ('...') cut to kMaxQuotedBytes, as
+// the loader's own messages show values: a 1 MB number stays one short line.
+std::string cutQuotes(const std::string& message) {
+  std::string out;
+  std::size_t from = 0;
+  for (;;) {
+    const std::size_t open = message.find('\'', from);
+    const std::size_t close = open == std::string::npos ? open : message.find('\'', open + 1);
+    if (close == std::string::npos) return out + message.substr(from);
+    out += message.substr(from, open + 1 - from);
+    out += shownText(std::string_view(message).substr(open + 1, close - open - 1), ScenarioLoader::kMaxQuotedBytes);
+    out += '\'';
+    from = close + 1;
+  }
+}
+
 Problem parseProblem(const json::parse_error& e, const std::string& text) {
-  Problem p{"", "not valid JSON: " + reason(e.what())};
+  Problem p{"", "not valid JSON: " + cutQuotes(reason(e.what()))};
   locate(p, text, e.byte == 0 ? 0 : e.byte - 1);
   return p;
 }
@@ -134,11 +161,12 @@ Problem parseProblem(const json::parse_error& e, const std::string& text) {
 // position; the offending token, which the message quotes, is found among
 // the text's tokens instead (not in a comment or a string).
 Problem valueProblem(const json::exception& e, const std::string& text) {
-  Problem p{"", "not valid JSON: " + reason(e.what())};
-  const std::size_t open = p.message.find('\'');
-  const std::size_t close = p.message.find('\'', open + 1);
+  const std::string why = reason(e.what());
+  Problem p{"", "not valid JSON: " + cutQuotes(why)};
+  const std::size_t open = why.find('\'');
+  const std::size_t close = why.find('\'', open + 1);
   if (open != std::string::npos && close != std::string::npos) {
-    const auto where = JsonLocator::findToken(text, p.message.substr(open + 1, close - open - 1));
+    const auto where = JsonLocator::findToken(text, why.substr(open + 1, close - open - 1));
     if (where) {
       p.line = where->line;
       p.column = where->column;
@@ -206,21 +234,44 @@ Scenario ScenarioLoader::loadText(const std::string& text, const std::string& so
   return s;
 }
 
+std::string ScenarioLoader::sourceName(const std::string& path) {
+  return path == "-" ? "<stdin>" : path;
+}
+
 Scenario ScenarioLoader::loadFile(const std::string& path) {
-  // Only a regular file of bounded size is read: not a directory, a device
-  // (/dev/zero never ends) or a pipe.
-  struct stat info {};
-  if (::stat(path.c_str(), &info) != 0) throw ScenarioError(path, {{"", "cannot open the file for reading"}});
-  if (!S_ISREG(info.st_mode)) throw ScenarioError(path, {{"", "expected a regular file"}});
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ScenarioError(path, {{"", "cannot open the file for reading"}});
+  // A regular file, a pipe (`tabletop run <(generate)`) or standard input
+  // ("-"), each read to at most kMaxFileBytes: not a directory or a device
+  // (/dev/zero never ends).
+  const std::string source = sourceName(path);
+  int fd = STDIN_FILENO;
+  if (path != "-") {
+    struct stat info {};
+    if (::stat(path.c_str(), &info) != 0) throw ScenarioError(source, {{"", "cannot open the file for reading"}});
+    if (!S_ISREG(info.st_mode) && !S_ISFIFO(info.st_mode)) {
+      throw ScenarioError(source, {{"", "expected a regular file or a pipe"}});
+    }
+    // Not blocking in open(): a named pipe that no one writes to reads as
+    // empty instead of waiting for a writer forever.
+    fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+    if (fd < 0) throw ScenarioError(source, {{"", "cannot open the file for reading"}});
+    ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+  }
   std::string text;
   char chunk[1 << 16];
-  while (text.size() <= kMaxFileBytes && (in.read(chunk, sizeof chunk) || in.gcount() > 0)) {
-    text.append(chunk, static_cast<std::size_t>(in.gcount()));
+  bool failed = false;
+  while (text.size() <= kMaxFileBytes) {
+    const ssize_t n = ::read(fd, chunk, sizeof chunk);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) failed = true;
+    if (n <= 0) break;
+    text.append(chunk, static_cast<std::size_t>(n));
   }
-  if (in.bad()) throw ScenarioError(path, {{"", "cannot read the file"}});
-  return loadText(text, path);
+  if (fd != STDIN_FILENO) ::close(fd);
+  if (failed) throw ScenarioError(source, {{"", "cannot read the file"}});
+  if (text.size() > kMaxFileBytes) {
+    throw ScenarioError(source, {{"", "expected at most " + std::to_string(kMaxFileBytes) + " bytes, got more"}});
+  }
+  return loadText(text, source);
 }
 
 }  // namespace tabletop

@@ -20,12 +20,19 @@ class ScenarioLoader {
   static constexpr std::size_t kMaxActions = 100000;       ///< script entries
   static constexpr std::size_t kMaxNameBytes = 64;         ///< an entity's name (UTF-8 bytes)
   static constexpr std::size_t kMaxTextBytes = 4096;       ///< the scenario's name and description
+  /// A value a message quotes is cut to this many bytes (and says how many
+  /// more there were).
+  static constexpr std::size_t kMaxQuotedBytes = 40;
   /// Steps x max_substeps x iterations x entities: the most solver work one
   /// run may ask for (about an hour at the slowest).
   static constexpr double kMaxWork = 1e11;
 
-  /// Reads and checks the file at `path`.
+  /// Reads and checks the scenario at `path`: a regular file, a pipe, or
+  /// standard input for "-", at most kMaxFileBytes of it.
   static Scenario loadFile(const std::string& path);
+  /// How errors and outputs name the scenario read from `path`: "<stdin>"
+  /// for "-", else the path.
+  static std::string sourceName(const std::string& path);
   /// Checks `text`, naming it `source` in errors.
   static Scenario loadText(const std::string& text, const std::string& source);
   /// Empty when `settings` asks for at most kMaxSteps steps and kMaxWork

@@ -161,6 +161,31 @@ TEST(HostileInput, DurationShorterThanTheScriptIsWarned) {
   EXPECT_NE(o.err.find(file + ":3:22: at /script/0/t: warning: the duration"), std::string::npos) << o.err;
 }
 
+// A scenario from standard input ("-") or a pipe runs as from its file
+// (the same state hash), named <stdin> or by the pipe's path; a device is
+// still refused.
+TEST(HostileInput, AScenarioFromAPipeOrStandardInput) {
+  const std::string file = kScenarios + "example2_two_cubes.json";
+  const std::string bin = kBin + "tabletop";
+  const Outcome fromFile = run("'" + bin + "' run --json '" + file + "'");
+  ASSERT_EQ(fromFile.status, 0) << fromFile.err;
+  const auto hash = [](const std::string& out) {
+    const std::size_t at = out.find("\"state_hash\"");
+    return at == std::string::npos ? std::string() : out.substr(at, 40);
+  };
+  const Outcome fromStdin = run("'" + bin + "' run --json - < '" + file + "'");
+  EXPECT_EQ(fromStdin.status, 0) << fromStdin.err;
+  EXPECT_NE(fromStdin.out.find("\"file\": \"<stdin>\""), std::string::npos) << fromStdin.out.substr(0, 300);
+  const Outcome fromPipe = run("bash -c \"'" + bin + "' run --json <(cat '" + file + "')\"");
+  EXPECT_EQ(fromPipe.status, 0) << fromPipe.err;
+  EXPECT_FALSE(hash(fromFile.out).empty());
+  EXPECT_EQ(hash(fromStdin.out), hash(fromFile.out));
+  EXPECT_EQ(hash(fromPipe.out), hash(fromFile.out));
+  const Outcome device = runArgs({"run", "/dev/zero"});
+  EXPECT_EQ(device.status, 2);
+  EXPECT_NE(device.err.find("expected a regular file or a pipe"), std::string::npos) << device.err;
+}
+
 // The plot's name is checked before anything runs.
 TEST(HostileInput, PlotNameIsCheckedFirst) {
   const Outcome o = runArgs({"compare", kScenarios + "hard/pyramid_55.json", "--plot", "p.jpeg"});

@@ -28,6 +28,8 @@ def test_every_shipped_scenario_meets_the_scenario_schema(path):
     (lambda s: s["entities"][0].update(on="table", position=[0, 0.8, 0]), "position"),
     (lambda s: s["script"][0]["push"].update(direction="Left"), "push"),
     (lambda s: s["settings"].update(timestep=1.0), "timestep"),
+    (lambda s: s["entities"][0].update(name="A\u200b"), "name"),
+    (lambda s: s.update(name="s\u2028"), "name"),
 ])
 def test_the_scenario_schema_refuses_what_the_loader_refuses(change, where, tmp_path, tabletop_bin):
     scene = {"version": 1, "name": "s", "settings": {},
