@@ -32,25 +32,13 @@ std::string contentOf(const std::string& path) {
 // fail as on a full disk) and TMPDIR set to `tmp`.
 pid_t startLimited(const std::vector<std::string>& args, const std::string& errFile, rlim_t maxFileBytes,
                    const std::string& tmp = "") {
-  const pid_t pid = fork();
-  if (pid == 0) {
+  return start(args, errFile, [&] {
     if (maxFileBytes > 0) {
       const rlimit limit{maxFileBytes, maxFileBytes};
       setrlimit(RLIMIT_FSIZE, &limit);
     }
     if (!tmp.empty()) setenv("TMPDIR", tmp.c_str(), 1);
-    const int out = open("/dev/null", O_WRONLY), err = open(errFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    dup2(out, 1);
-    dup2(err, 2);
-    std::vector<char*> argv;
-    const std::string bin = kBin + "tabletop";
-    argv.push_back(const_cast<char*>(bin.c_str()));
-    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    execv(bin.c_str(), argv.data());
-    _exit(127);
-  }
-  return pid;
+  });
 }
 
 // gnuplot exits 0 when its writes fail; the plot is checked whole, and the

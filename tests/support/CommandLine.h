@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -68,10 +69,13 @@ inline std::string writeTemp(const std::string& name, const std::string& text) {
 inline int lineCount(const std::string& s) { return static_cast<int>(std::count(s.begin(), s.end(), '\n')); }
 
 // Starts tabletop with `args`, no shell between (so hostile names reach
-// it as they are), its output discarded and its errors into `errFile`.
-inline pid_t start(const std::vector<std::string>& args, const std::string& errFile) {
+// it as they are), its output discarded and its errors into `errFile`;
+// `inChild` runs in the child first (limits, environment).
+inline pid_t start(const std::vector<std::string>& args, const std::string& errFile,
+                   const std::function<void()>& inChild = {}) {
   const pid_t pid = fork();
   if (pid == 0) {
+    if (inChild) inChild();
     const int out = open("/dev/null", O_WRONLY), err = open(errFile.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     dup2(out, 1);
     dup2(err, 2);
