@@ -1,5 +1,6 @@
 #include "app/SweepCommand.h"
 
+#include <algorithm>
 #include <iostream>
 
 #include "app/DataPaths.h"
@@ -10,6 +11,7 @@
 #include "app/RunCommand.h"
 #include "app/SweepMap.h"
 #include "scenario/ScenarioError.h"
+#include "sweep/DaskBridge.h"
 #include "sweep/SweepPool.h"
 #include "sweep/SweepTable.h"
 
@@ -39,8 +41,13 @@ void addSweepOptions(CLI::App& command, SweepOptions& options) {
   command.add_option("--out", options.out,
                      "Write the table to PREFIX.csv and PREFIX.jsonl, a row as each run ends; a sweep "
                      "stopped goes on from where it stopped (default: JSON lines on standard output)");
-  command.add_option("--jobs", options.jobs, "Worker processes (default: every core)")
-      ->check(CLI::Range(1, kMaxJobs));
+  CLI::Option* jobs = command.add_option("--jobs", options.jobs, "Worker processes (default: every core)")
+                          ->check(CLI::Range(1, kMaxJobs));
+  command
+      .add_option("--scheduler", options.scheduler,
+                  "Run on the workers of the Dask cluster whose scheduler is at tcp://HOST:PORT (python3 with "
+                  "dask.distributed and the tabletop module here, the module on the workers)")
+      ->excludes(jobs);
   command.add_option("--plot", options.plot,
                      "Draw where the modes agree with the rules over the first two parameters (FILE.png or FILE.svg)");
 }
@@ -49,6 +56,12 @@ int runSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) 
   if (options.plot) {
     if (const std::string problem = plotNameProblem(*options.plot); !problem.empty()) {
       err << "tabletop sweep: --plot: " << problem << "\n";
+      return kExitBadInput;
+    }
+  }
+  if (options.scheduler) {
+    if (const std::string problem = schedulerProblem(*options.scheduler); !problem.empty()) {
+      err << "tabletop sweep: --scheduler: " << problem << "\n";
       return kExitBadInput;
     }
   }
@@ -74,16 +87,18 @@ int runSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) 
     Progress progress(err);
     progress.start(static_cast<long>(total));
     progress.set(static_cast<long>(first), "runs");
-    const int jobs = options.jobs > 0 ? options.jobs : availableCores();
-    runSweepPool(
-        spec, first, total - first, jobs,
-        [&](const SweepRow& row) {
-          if (table) table->append(row);
-          else out << jsonLine(columns, row) << std::flush;
-          rows.push_back(row);
-          progress.set(static_cast<long>(rows.size()), "runs");
-        },
-        [&interrupt] { return interrupt.requested(); });
+    const auto onRow = [&](const SweepRow& row) {
+      if (table) table->append(row);
+      else out << jsonLine(columns, row) << std::flush;
+      rows.push_back(row);
+      progress.set(static_cast<long>(rows.size()), "runs");
+    };
+    const auto stop = [&interrupt] { return interrupt.requested(); };
+    if (options.scheduler) {
+      runSweepBridge(spec, first, total - first, daskBridgeCommand(*options.scheduler), onRow, stop);
+    } else {
+      runSweepPool(spec, first, total - first, options.jobs > 0 ? options.jobs : availableCores(), onRow, stop);
+    }
   } catch (const std::exception& e) {
     err << "tabletop sweep: " << e.what() << "\n";
     return kExitFailure;

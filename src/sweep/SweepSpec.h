@@ -47,6 +47,7 @@ struct SweepSpec {
   static constexpr std::size_t kMaxValues = 10000;   ///< values of one list, count of one range
   static constexpr std::size_t kMaxRuns = 100000;    ///< runs of one sweep
   static constexpr std::size_t kMaxEntities = 100;   ///< entities of the base scene (the row's width)
+  static constexpr std::size_t kMaxSceneBytes = 1u << 20;  ///< the base scene, written as JSON
   static constexpr std::size_t kMaxNameBytes = 64;   ///< the sweep's and a parameter's name
 
   std::string name;

@@ -281,6 +281,12 @@ SweepSpec read(const json& root, const std::string& source, const std::string& s
   }
   if (root.contains("scene")) spec.scene = baseScene(root["scene"], "/scene", source, shipped, c, spec.sceneSource);
   if (!spec.scene.is_object()) return spec;
+  // Each run's scene is built from the base's text: its size bounds the
+  // cost of checking every run before any runs.
+  if (const std::size_t bytes = spec.scene.dump().size(); bytes > SweepSpec::kMaxSceneBytes) {
+    c.fail("/scene", "expected a base scene of at most " + std::to_string(SweepSpec::kMaxSceneBytes) +
+                         " bytes as JSON, got " + std::to_string(bytes));
+  }
   spec.entities.clear();
   for (const json& e : spec.scene.value("entities", json::array())) spec.entities.push_back(e.value("name", ""));
   if (spec.entities.size() > SweepSpec::kMaxEntities) {

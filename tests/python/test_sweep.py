@@ -1,6 +1,8 @@
 """tabletop.sweep: the command line's table as a DataFrame, here and on a Dask cluster."""
 import json
+import os
 import subprocess
+import sys
 
 import pytest
 
@@ -49,12 +51,23 @@ def test_a_bad_spec_raises_the_located_error():
         tabletop.sweep(bad)
 
 
-def test_a_dask_cluster_of_two_worker_processes_gives_the_same_rows(local):
+def test_a_dask_cluster_of_two_worker_processes_gives_the_same_rows(local, tabletop_bin, tmp_path):
     import distributed  # pylint: disable=import-outside-toplevel
+    spec = tmp_path / "spec.json"
+    spec.write_text(json.dumps(SPEC))
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster, \
             distributed.Client(cluster) as client:
         remote = tabletop.sweep(SPEC, client)
         # The runs went to a cluster of two worker processes.
         assert len(client.scheduler_info()["workers"]) == 2
+        # The command line, through the same scheduler, into a table.
+        out = tmp_path / "cluster"
+        subprocess.run([tabletop_bin, "sweep", str(spec), "--scheduler", cluster.scheduler_address, "--out", str(out)],
+                       check=True, capture_output=True, timeout=300,
+                       env=dict(os.environ, TABLETOP_PYTHON=sys.executable, TABLETOP_DATA_DIR=str(SOURCE)))
     assert comparable(remote).equals(comparable(local))
     assert list(remote["bullet.state_hash"]) == list(local["bullet.state_hash"])
+    rows = [json.loads(line) for line in (tmp_path / "cluster.jsonl").read_text().splitlines()]
+    assert [r["bullet.state_hash"] for r in rows] == list(local["bullet.state_hash"])
+    for row, (_, ours) in zip(rows, comparable(local).iterrows()):
+        assert all(row[column] == value for column, value in ours.items())
