@@ -322,6 +322,14 @@ SweepSpec read(const json& root, const std::string& source, const std::string& s
       for (std::size_t k = 0; k < ps.size(); ++k) spec.parameters.push_back(parameter(ps[k], "/parameters/" + std::to_string(k), spec.scene, c));
     }
   }
+  // Each parameter names a column of its own.
+  std::set<std::string> names{"run", "problem"};
+  for (const SweepParameter& p : spec.parameters) {
+    const bool modeLike = p.name.rfind("rules.", 0) == 0 || p.name.rfind("compat.", 0) == 0 || p.name.rfind("bullet.", 0) == 0;
+    if (!names.insert(p.name).second || modeLike) {
+      c.fail(p.at, "expected a name no other column has, got \"" + shownText(p.name, 40) + "\"");
+    }
+  }
   if (!c.problems.empty()) return spec;
   // The run count, bounded before anything multiplies past it.
   double runs = static_cast<double>(spec.samples);

@@ -107,6 +107,10 @@ TEST(SweepSpec, BadSpecsAreRefusedWithLocatedLines) {
       {"{\"version\": 1, \"name\": \"x\", \"name\": \"y\"}", "at /name: expected each key once in an object"},
       {"{\"version\": 1, \"name\": \"x\", \"scene\": 3, \"parameters\": [], \"modes\": [\"rules\"]}",
        "at /scene: expected a scene"},
+      {"{\"version\": 1, \"name\": \"x\", \"scene\": \"example2_two_cubes\", \"modes\": [\"rules\"],\n"
+       " \"parameters\": [{\"name\": \"m\", \"pointer\": \"/entities/1/mass\", \"values\": [1]},\n"
+       "  {\"name\": \"m\", \"pointer\": \"/entities/0/mass\", \"values\": [1]}]}",
+       "spec.json:3:3: at /parameters/1: expected a name no other column has, got \"m\""},
       {"[1, 2", "spec.json:1:6: not valid JSON"},
       {std::string(40, '[') + std::string(40, ']'), "expected arrays and objects nested at most 32 deep"},
   };
