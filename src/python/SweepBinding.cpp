@@ -4,6 +4,7 @@
 // (SweepSpec::selfContained), so they need the module but none of the files.
 #include "python/SweepBinding.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <string>
 #include <vector>
@@ -18,6 +19,9 @@ namespace py = pybind11;
 
 namespace tabletop {
 namespace {
+
+// The most runs one cluster task holds.
+constexpr std::size_t kRunsPerTask = 32;
 
 // Where shipped scenes are found: TABLETOP_DATA_DIR's scenarios/ if set,
 // else the source tree the module was built from.
@@ -41,16 +45,21 @@ py::object fromJson(const nlohmann::json& j) {
   return py::module_::import("json").attr("loads")(j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace));
 }
 
-// One run of a self-contained spec: its row as a list. What the workers run.
-py::object sweepRow(const std::string& selfContained, std::size_t index) {
-  SweepRow row;
-  {
-    const SweepSpec spec = loadSweepText(selfContained, "<spec>", shippedScenes());
-    if (index >= spec.runs()) throw py::index_error("the sweep has " + std::to_string(spec.runs()) + " runs");
-    py::gil_scoped_release release;
-    row = runSweepRow(spec, index);
+// Runs of a self-contained spec: their rows as lists. What the workers
+// run, a few runs a task, so a task's cost (sending it, loading the spec)
+// is shared. The spec was checked where it was made: its runs are not
+// checked again here.
+py::object sweepRows(const std::string& selfContained, const std::vector<std::size_t>& indices) {
+  const SweepSpec spec = loadSweepText(selfContained, "<spec>", shippedScenes(), false);
+  for (std::size_t i : indices) {
+    if (i >= spec.runs()) throw py::index_error("the sweep has " + std::to_string(spec.runs()) + " runs");
   }
-  return fromJson(row);
+  std::vector<SweepRow> rows;
+  {
+    py::gil_scoped_release release;
+    for (std::size_t i : indices) rows.push_back(runSweepRow(spec, i));
+  }
+  return fromJson(rows);
 }
 
 // The task sent to the workers: a Python function that imports the module
@@ -61,9 +70,9 @@ py::object workerTask() {
   py::dict scope;
   scope["__name__"] = "tabletop_sweep_task";
   py::exec(R"(
-def run(spec, index):
+def run(spec, indices):
     import tabletop
-    return tabletop._sweep_row(spec, index)
+    return tabletop._sweep_rows(spec, indices)
 )",
            scope);
   return scope["run"];
@@ -88,14 +97,22 @@ py::object sweep(const py::object& specObject, const py::object& client, int job
     if (interrupted) throw py::error_already_set();
     for (const SweepRow& r : done) rows.append(fromJson(r));
   } else {
-    // One task per run; each worker loads the spec it is sent and runs one row.
+    // A task per few runs, four tasks or more per worker thread, so the
+    // cluster's threads stay busy to the end.
     const std::string text = spec.selfContained();
-    py::list indices, texts;
-    for (std::size_t i = 0; i < spec.runs(); ++i) {
-      indices.append(i);
+    std::size_t threads = 0;
+    for (const auto& item : client.attr("nthreads")().cast<py::dict>()) threads += item.second.cast<std::size_t>();
+    const std::size_t chunk = std::clamp<std::size_t>(spec.runs() / (4 * std::max<std::size_t>(threads, 1)), 1, kRunsPerTask);
+    py::list chunks, texts;
+    for (std::size_t i = 0; i < spec.runs(); i += chunk) {
+      py::list indices;
+      for (std::size_t k = i; k < std::min(spec.runs(), i + chunk); ++k) indices.append(k);
+      chunks.append(indices);
       texts.append(text);
     }
-    rows = client.attr("gather")(client.attr("map")(workerTask(), texts, indices));
+    for (const py::handle part : client.attr("gather")(client.attr("map")(workerTask(), texts, chunks))) {
+      for (const py::handle row : part) rows.append(row);
+    }
   }
   return py::module_::import("pandas").attr("DataFrame")(rows, py::arg("columns") = columns);
 }
@@ -108,9 +125,9 @@ void addSweep(py::module_& m) {
         "`tabletop sweep` writes as a pandas DataFrame, one row per run in run order. Given a dask.distributed "
         "Client, the runs go to its workers (which need the module installed); else they run here, on `jobs` "
         "forked worker processes. The rows are the same either way, state_hash for state_hash.");
-  m.def("_sweep_row", &sweepRow, py::arg("spec"), py::arg("index"),
-        "One run of a self-contained sweep spec, as a list in the table's columns: what tabletop.sweep's "
-        "cluster workers run.");
+  m.def("_sweep_rows", &sweepRows, py::arg("spec"), py::arg("indices"),
+        "Runs of a self-contained sweep spec, each a list in the table's columns: what tabletop.sweep's "
+        "cluster workers and tabletop sweep --scheduler's run.");
 }
 
 }  // namespace tabletop

@@ -13,26 +13,36 @@ namespace {
 // imports the module where it runs. The process ends when its input ends
 // and every task sent is back; killed, its client's tasks are cancelled.
 constexpr const char* kScript = R"(
-import json, queue, sys, threading
+import json, os, queue, sys, threading
 from distributed import Client
 
-def run(spec, index):
+def run(spec, indices):
     import tabletop
-    return tabletop._sweep_row(spec, index)
+    return tabletop._sweep_rows(spec, indices)
 
 try:
     client = Client(sys.argv[1], timeout="30s")
 except Exception as e:
     sys.exit("tabletop sweep: --scheduler %s: cannot connect: %s" % (sys.argv[1], e))
-spec = sys.stdin.readline()
 done = queue.Queue()
 
 def submit():
-    count = 0
-    for line in sys.stdin:
-        future = client.submit(run, spec, int(line), pure=False)
-        future.add_done_callback(done.put)
-        count += 1
+    # The spec's line, then run numbers: those that came in one read go
+    # out as tasks of at most 32 runs.
+    pending, spec, count = b"", None, 0
+    while True:
+        data = os.read(0, 1 << 16)
+        if not data:
+            break
+        pending += data
+        *lines, pending = pending.split(b"\n")
+        if spec is None and lines:
+            spec = lines.pop(0).decode()
+        runs = [int(line) for line in lines]
+        for k in range(0, len(runs), 32):
+            future = client.submit(run, spec, runs[k:k + 32], pure=False)
+            future.add_done_callback(done.put)
+            count += 1
     done.put(count)
 
 threading.Thread(target=submit, daemon=True).start()
@@ -44,10 +54,10 @@ while sent is None or back < sent:
         continue
     back += 1
     try:
-        row = item.result()
+        rows = item.result()
     except Exception as e:
-        row = {"error": "%s: %s" % (type(e).__name__, e)}
-    sys.stdout.write(json.dumps(row) + "\n")
+        rows = [{"error": "%s: %s" % (type(e).__name__, e)}]
+    sys.stdout.write("".join(json.dumps(row) + "\n" for row in rows))
     sys.stdout.flush()
 client.close()
 )";

@@ -76,8 +76,11 @@ struct SweepSpec {
 /// Reads and checks a spec: every problem thrown together as one
 /// ScenarioError, one located line each. A "scene" naming a file (ending in
 /// .json) is read relative to the spec's folder, any other name from
-/// `shippedScenes`; every run's scene is checked before anything runs.
-SweepSpec loadSweepText(const std::string& text, const std::string& source, const std::string& shippedScenes);
+/// `shippedScenes`; every run's scene is checked before anything runs,
+/// unless `checkEveryRun` is false (a spec checked already where it was
+/// made, sent whole to a cluster's worker that runs a few of its runs).
+SweepSpec loadSweepText(const std::string& text, const std::string& source, const std::string& shippedScenes,
+                        bool checkEveryRun = true);
 SweepSpec loadSweepFile(const std::string& path, const std::string& shippedScenes);
 
 }  // namespace tabletop
