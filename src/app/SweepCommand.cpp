@@ -37,7 +37,8 @@ std::string agreementSummary(const SweepSpec& spec, const std::vector<SweepRow>&
 }  // namespace
 
 void addSweepOptions(CLI::App& command, SweepOptions& options) {
-  command.add_option("SPEC", options.spec, "Sweep spec (JSON): a base scene, the parameters to vary, the modes")->required();
+  command.add_option("SPEC", options.spec, "Sweep spec (JSON): a base scene, the parameters to vary, the modes")
+      ->required();
   command.add_option("--out", options.out,
                      "Write the table to PREFIX.csv and PREFIX.jsonl, a row as each run ends; a sweep "
                      "stopped goes on from where it stopped (default: JSON lines on standard output)");
@@ -88,8 +89,10 @@ int runSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) 
     progress.start(static_cast<long>(total));
     progress.set(static_cast<long>(first), "runs");
     const auto onRow = [&](const SweepRow& row) {
-      if (table) table->append(row);
-      else out << jsonLine(columns, row) << std::flush;
+      if (table)
+        table->append(row);
+      else
+        out << jsonLine(columns, row) << std::flush;
       rows.push_back(row);
       progress.set(static_cast<long>(rows.size()), "runs");
     };
@@ -105,12 +108,13 @@ int runSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) 
   }
   const std::string where = table ? " in " + table->csvPath() + " and " + table->jsonPath() : "";
   if (interrupt.requested()) {
-    err << "tabletop sweep: interrupted after " << rows.size() << " of " << spec.runs() << " runs; they are kept" << where
-        << (table ? "; the same command goes on from there" : "") << "\n";
+    err << "tabletop sweep: interrupted after " << rows.size() << " of " << spec.runs() << " runs; they are kept"
+        << where << (table ? "; the same command goes on from there" : "") << "\n";
     return kExitInterrupted;
   }
-  (table ? out : err) << spec.name << ": " << rows.size() << " runs" << (first ? " (" + std::to_string(first) + " done before)" : "")
-                      << where << agreementSummary(spec, rows) << "\n";
+  (table ? out : err) << spec.name << ": " << rows.size() << " runs"
+                      << (first ? " (" + std::to_string(first) + " done before)" : "") << where
+                      << agreementSummary(spec, rows) << "\n";
   if (options.plot) {
     if (const std::string problem = writeSweepMap(spec, rows, *options.plot); !problem.empty()) {
       err << "tabletop sweep: " << problem << "\n";

@@ -22,10 +22,13 @@ std::string sweepMapScript(const SweepSpec& spec, const std::vector<SweepRow>& r
   // The mode drawn: the last one compared with the rules (bullet if it ran).
   std::string mode;
   for (SimulationMode m : spec.modes) {
-    if (std::find(columns.begin(), columns.end(), std::string(toString(m)) + ".reason") != columns.end()) mode = toString(m);
+    if (std::find(columns.begin(), columns.end(), std::string(toString(m)) + ".reason") != columns.end())
+      mode = toString(m);
   }
-  if (spec.parameters.size() < 2) problem = "the map needs two varied parameters, the spec has " + std::to_string(spec.parameters.size());
-  else if (mode.empty()) problem = "the map needs the rules and another mode, recording \"distance\"";
+  if (spec.parameters.size() < 2)
+    problem = "the map needs two varied parameters, the spec has " + std::to_string(spec.parameters.size());
+  else if (mode.empty())
+    problem = "the map needs the rules and another mode, recording \"distance\"";
   if (!problem.empty()) return "";
   const auto column = [&columns](const std::string& name) {
     return static_cast<std::size_t>(std::find(columns.begin(), columns.end(), name) - columns.begin());
@@ -35,7 +38,8 @@ std::string sweepMapScript(const SweepSpec& spec, const std::vector<SweepRow>& r
   std::map<std::string, std::vector<std::pair<double, double>>> points;
   for (const SweepRow& row : rows) {
     if (!row.at(1).is_number() || !row.at(2).is_number()) {
-      problem = "the map needs numeric parameters; " + spec.parameters[0].name + " or " + spec.parameters[1].name + " is not";
+      problem =
+          "the map needs numeric parameters; " + spec.parameters[0].name + " or " + spec.parameters[1].name + " is not";
       return "";
     }
     std::string category = "did not run";
@@ -48,18 +52,21 @@ std::string sweepMapScript(const SweepSpec& spec, const std::vector<SweepRow>& r
   for (const auto& [category, list] : points) {
     if (category != "agrees" && category != "did not run") order.push_back(category);
   }
-  std::stable_sort(order.begin(), order.end(),
-                   [&points](const std::string& a, const std::string& b) { return points[a].size() > points[b].size(); });
+  std::stable_sort(order.begin(), order.end(), [&points](const std::string& a, const std::string& b) {
+    return points[a].size() > points[b].size();
+  });
   if (points.count("agrees")) order.insert(order.begin(), "agrees");
   if (points.count("did not run")) order.push_back("did not run");
 
   std::ostringstream g;
   g.precision(17);
-  g << "set title " << gnuplotQuoted(spec.name + ": " + mode + " against the rules, " + std::to_string(rows.size()) + " runs")
+  g << "set title "
+    << gnuplotQuoted(spec.name + ": " + mode + " against the rules, " + std::to_string(rows.size()) + " runs")
     << " noenhanced\n";
   g << "set xlabel " << gnuplotQuoted(spec.parameters[0].name) << " noenhanced\n";
   g << "set ylabel " << gnuplotQuoted(spec.parameters[1].name) << " noenhanced\n";
-  g << "set key outside right top noenhanced title " << gnuplotQuoted("first reason") << "\nset grid\nset offsets graph 0.03, graph 0.03, graph 0.03, graph 0.03\n";
+  g << "set key outside right top noenhanced title " << gnuplotQuoted("first reason")
+    << "\nset grid\nset offsets graph 0.03, graph 0.03, graph 0.03, graph 0.03\n";
   for (std::size_t k = 0; k < order.size(); ++k) {
     g << "$d" << k << " << EOD\n";
     for (const auto& [x, y] : points[order[k]]) g << x << " " << y << "\n";
@@ -69,8 +76,10 @@ std::string sweepMapScript(const SweepSpec& spec, const std::vector<SweepRow>& r
   std::size_t reasons = 0;
   for (std::size_t k = 0; k < order.size(); ++k) {
     const std::string& c = order[k];
-    const std::string colour = c == "agrees" ? kAgrees : c == "did not run" ? kNotRun
-                             : kReasonColours[reasons++ % (sizeof kReasonColours / sizeof *kReasonColours)];
+    const std::string colour = c == "agrees" ? kAgrees
+                               : c == "did not run"
+                                   ? kNotRun
+                                   : kReasonColours[reasons++ % (sizeof kReasonColours / sizeof *kReasonColours)];
     g << (k ? ", \\\n     " : "") << "$d" << k << " with points pt 5 ps 1.6 lc rgb '" << colour << "' title "
       << gnuplotQuoted(c + " (" + std::to_string(points[c].size()) + ")");
   }

@@ -87,12 +87,13 @@ py::object sweep(const py::object& specObject, const py::object& client, int job
     bool interrupted = false;
     {
       py::gil_scoped_release release;
-      runSweepPool(spec, 0, spec.runs(), jobs, [&done](const SweepRow& r) { done.push_back(r); },
-                   [&interrupted] {
-                     py::gil_scoped_acquire gil;
-                     interrupted = interrupted || PyErr_CheckSignals() != 0;
-                     return interrupted;
-                   });
+      runSweepPool(
+          spec, 0, spec.runs(), jobs, [&done](const SweepRow& r) { done.push_back(r); },
+          [&interrupted] {
+            py::gil_scoped_acquire gil;
+            interrupted = interrupted || PyErr_CheckSignals() != 0;
+            return interrupted;
+          });
     }
     if (interrupted) throw py::error_already_set();
     for (const SweepRow& r : done) rows.append(fromJson(r));
@@ -102,7 +103,8 @@ py::object sweep(const py::object& specObject, const py::object& client, int job
     const std::string text = spec.selfContained();
     std::size_t threads = 0;
     for (const auto& item : client.attr("nthreads")().cast<py::dict>()) threads += item.second.cast<std::size_t>();
-    const std::size_t chunk = std::clamp<std::size_t>(spec.runs() / (4 * std::max<std::size_t>(threads, 1)), 1, kRunsPerTask);
+    const std::size_t chunk =
+        std::clamp<std::size_t>(spec.runs() / (4 * std::max<std::size_t>(threads, 1)), 1, kRunsPerTask);
     py::list chunks, texts;
     for (std::size_t i = 0; i < spec.runs(); i += chunk) {
       py::list indices;

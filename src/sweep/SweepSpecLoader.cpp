@@ -8,83 +8,19 @@
 #include "scenario/JsonText.h"
 #include "scenario/ScenarioError.h"
 #include "scenario/ScenarioLoader.h"
+#include "sweep/SpecChecker.h"
 #include "sweep/SweepSpec.h"
 
 namespace tabletop {
 namespace {
 
 using nlohmann::json;
-
-// A value as a message shows it: short and on one line.
-std::string shown(const json& j) {
-  if (j.is_string()) return "\"" + shownText(j.get_ref<const std::string&>(), 40) + "\"";
-  if (j.is_array() && j.size() > 8) return "an array of " + std::to_string(j.size()) + " values";
-  if (j.is_object() && j.size() > 8) return "an object of " + std::to_string(j.size()) + " keys";
-  const std::string s = j.dump();
-  return s.size() > 40 ? s.substr(0, 37) + "..." : s;
-}
-
-// Collects problems against pointers into the spec.
-struct Checker {
-  std::vector<Problem> problems;
-  void fail(const std::string& at, const std::string& message) { problems.push_back({at, message}); }
-
-  // The keys of object `j` at `at` not among `known` are reported.
-  void onlyKeys(const json& j, const std::string& at, const std::set<std::string>& known) {
-    for (auto it = j.begin(); it != j.end(); ++it) {
-      if (!known.count(it.key())) fail(at + "/" + escapePointerToken(it.key()), "unknown key '" + shownText(it.key(), 40) + "'");
-    }
-  }
-  bool isNumber(const json& j, const std::string& at) {
-    if (j.is_number() && std::isfinite(j.get<double>())) return true;
-    fail(at, "expected a finite number, got " + shown(j));
-    return false;
-  }
-  // A whole number from lo to hi, or `fallback` after a problem.
-  std::size_t count(const json& j, const std::string& at, std::size_t lo, std::size_t hi, std::size_t fallback) {
-    if (j.is_number_integer() && j.get<long long>() >= static_cast<long long>(lo) &&
-        j.get<long long>() <= static_cast<long long>(hi)) {
-      return j.get<std::size_t>();
-    }
-    fail(at, "expected a whole number from " + std::to_string(lo) + " to " + std::to_string(hi) + ", got " + shown(j));
-    return fallback;
-  }
-  std::string name(const json& j, const std::string& at) {
-    if (!j.is_string()) {
-      fail(at, "expected a string, got " + shown(j));
-      return "";
-    }
-    const std::string& s = j.get_ref<const std::string&>();
-    if (s.empty() || s.size() > SweepSpec::kMaxNameBytes || unprintableProblem(s)) {
-      fail(at, "expected a printable name of 1 to " + std::to_string(SweepSpec::kMaxNameBytes) + " bytes, got " + shown(j));
-    }
-    return s;
-  }
-  // A pointer that names a place in `scene`: an existing value, or a new
-  // key of an existing object.
-  std::string pointer(const json& j, const std::string& at, const json& scene) {
-    if (!j.is_string()) {
-      fail(at, "expected a JSON pointer (a string), got " + shown(j));
-      return "";
-    }
-    const std::string& s = j.get_ref<const std::string&>();
-    try {
-      const json::json_pointer p(s);
-      if (p.empty()) {
-        fail(at, "expected a pointer into the scene, got the whole scene \"\"");
-      } else if (!scene.contains(p) && !(scene.contains(p.parent_pointer()) && scene[p.parent_pointer()].is_object())) {
-        fail(at, "expected a place in the scene (a value, or a new key of an object), got " + shown(j));
-      }
-    } catch (const json::exception&) {
-      fail(at, "expected a JSON pointer (\"/entities/0/mass\"), got " + shown(j));
-    }
-    return s;
-  }
-};
+using sweep::SpecChecker;
+using sweep::shown;
 
 // The base scene: inline, a file beside the spec, or a shipped scene.
 json baseScene(const json& j, const std::string& at, const std::string& specFile, const std::string& shipped,
-               Checker& c, std::string& source) {
+               SpecChecker& c, std::string& source) {
   if (j.is_object()) {
     // An inline scene's problems are located in the spec, under /scene.
     source = specFile;
@@ -106,7 +42,8 @@ json baseScene(const json& j, const std::string& at, const std::string& specFile
   } else {
     for (char ch : s) {
       if (!(std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-' || ch == '/')) {
-        c.fail(at, "expected a shipped scene's name (letters, digits, _ - /) or a file ending in .json, got " + shown(j));
+        c.fail(at,
+               "expected a shipped scene's name (letters, digits, _ - /) or a file ending in .json, got " + shown(j));
         return json();
       }
     }
@@ -122,7 +59,7 @@ json baseScene(const json& j, const std::string& at, const std::string& specFile
 }
 
 // One entry of "parameters".
-SweepParameter parameter(const json& j, const std::string& at, const json& scene, Checker& c) {
+SweepParameter parameter(const json& j, const std::string& at, const json& scene, SpecChecker& c) {
   SweepParameter p;
   p.at = at;
   if (!j.is_object()) {
@@ -151,7 +88,8 @@ SweepParameter parameter(const json& j, const std::string& at, const json& scene
   } else if (j.contains("values")) {
     const json& v = j["values"];
     if (!v.is_array() || v.empty() || v.size() > SweepSpec::kMaxValues) {
-      c.fail(at + "/values", "expected an array of 1 to " + std::to_string(SweepSpec::kMaxValues) + " values, got " + shown(v));
+      c.fail(at + "/values",
+             "expected an array of 1 to " + std::to_string(SweepSpec::kMaxValues) + " values, got " + shown(v));
     } else {
       p.values.assign(v.begin(), v.end());
     }
@@ -171,7 +109,8 @@ SweepParameter parameter(const json& j, const std::string& at, const json& scene
     const std::size_t n = c.count(r["count"], ra + "/count", 1, SweepSpec::kMaxValues, 0);
     if (!ok || n == 0) return p;
     const double from = r["from"].get<double>(), to = r["to"].get<double>();
-    for (std::size_t k = 0; k < n; ++k) p.values.push_back(n == 1 ? from : from + (to - from) * double(k) / double(n - 1));
+    for (std::size_t k = 0; k < n; ++k)
+      p.values.push_back(n == 1 ? from : from + (to - from) * double(k) / double(n - 1));
   } else {
     const json& r = j["random"];
     const std::string ra = at + "/random";
@@ -183,7 +122,8 @@ SweepParameter parameter(const json& j, const std::string& at, const json& scene
     }
     const std::string key = uniform ? "uniform" : "normal";
     const json& v = r[key];
-    if (!v.is_array() || v.size() != 2 || !c.isNumber(v[0], ra + "/" + key + "/0") || !c.isNumber(v[1], ra + "/" + key + "/1")) {
+    if (!v.is_array() || v.size() != 2 || !c.isNumber(v[0], ra + "/" + key + "/0") ||
+        !c.isNumber(v[1], ra + "/" + key + "/1")) {
       if (!v.is_array() || v.size() != 2) c.fail(ra + "/" + key, "expected two numbers, got " + shown(v));
       return p;
     }
@@ -209,7 +149,7 @@ std::string culprit(const SweepSpec& spec, const std::string& path) {
 
 // Every run's scene must load and keep the base's entities: a bad value is
 // refused before anything runs, at the parameter that gave it.
-void checkRuns(const SweepSpec& spec, Checker& c) {
+void checkRuns(const SweepSpec& spec, SpecChecker& c) {
   for (std::size_t i = 0; i < spec.runs(); ++i) {
     std::string why;
     std::string at = "/parameters";
@@ -226,59 +166,86 @@ void checkRuns(const SweepSpec& spec, Checker& c) {
     if (why.empty()) continue;
     std::string values;
     const std::vector<json> v = spec.valuesOf(i);
-    for (std::size_t k = 0; k < v.size(); ++k) values += (k ? ", " : "") + spec.parameters[k].name + " = " + shown(v[k]);
+    for (std::size_t k = 0; k < v.size(); ++k)
+      values += (k ? ", " : "") + spec.parameters[k].name + " = " + shown(v[k]);
     c.fail(at, "run " + std::to_string(i) + " (" + values + ") " + why);
     return;
   }
 }
 
-SweepSpec read(const json& root, const std::string& source, const std::string& shipped, bool checkEveryRun, Checker& c) {
+// "modes": each once, kept in compare's order (rules, compat, bullet).
+std::vector<SimulationMode> modes(const json& m, SpecChecker& c) {
+  std::set<SimulationMode> chosen;
+  if (!m.is_array() || m.empty() || m.size() > 3) {
+    c.fail("/modes", "expected 1 to 3 of \"rules\", \"compat\", \"bullet\", got " + shown(m));
+    return {};
+  }
+  for (std::size_t k = 0; k < m.size(); ++k) {
+    const auto mode = m[k].is_string() ? simulationModeFromString(m[k].get<std::string>()) : std::nullopt;
+    if (!mode || !chosen.insert(*mode).second) {
+      c.fail("/modes/" + std::to_string(k),
+             "expected one of \"rules\", \"compat\", \"bullet\", each once, got " + shown(m[k]));
+    }
+  }
+  std::vector<SimulationMode> out;
+  for (SimulationMode mode : kAllModes) {
+    if (chosen.count(mode)) out.push_back(mode);
+  }
+  return out;
+}
+
+// "record": what each row records.
+SweepRecord record(const json& r, SpecChecker& c) {
+  SweepRecord out{false, false, false, false, false};
+  if (!r.is_array() || r.size() > 5) {
+    c.fail("/record", "expected an array of what to record, got " + shown(r));
+    return out;
+  }
+  for (std::size_t k = 0; k < r.size(); ++k) {
+    const std::string what = r[k].is_string() ? r[k].get<std::string>() : "";
+    bool* flag = what == "positions"    ? &out.positions
+                 : what == "events"     ? &out.events
+                 : what == "distance"   ? &out.distance
+                 : what == "cost"       ? &out.cost
+                 : what == "state_hash" ? &out.stateHash
+                                        : nullptr;
+    if (flag)
+      *flag = true;
+    else
+      c.fail("/record/" + std::to_string(k),
+             "expected one of \"positions\", \"events\", \"distance\", \"cost\", \"state_hash\", got " + shown(r[k]));
+  }
+  return out;
+}
+
+SweepSpec read(const json& root, const std::string& source, const std::string& shipped, bool checkEveryRun,
+               SpecChecker& c) {
   SweepSpec spec;
   spec.file = source;
   if (!root.is_object()) {
     c.fail("", "expected an object, got " + shown(root));
     return spec;
   }
-  c.onlyKeys(root, "", {"version", "name", "description", "scene", "set", "parameters", "samples", "seed", "modes", "record"});
+  c.onlyKeys(root, "",
+             {"version", "name", "description", "scene", "set", "parameters", "samples", "seed", "modes", "record"});
   for (const char* key : {"version", "name", "scene", "parameters", "modes"}) {
     if (!root.contains(key)) c.fail("", std::string("missing required key '") + key + "'");
   }
   if (root.contains("version") && root["version"] != 1) c.fail("/version", "expected 1, got " + shown(root["version"]));
   if (root.contains("name")) spec.name = c.name(root["name"], "/name");
-  if (root.contains("description") && !(root["description"].is_string() && root["description"].get_ref<const std::string&>().size() <= 4096)) {
+  if (root.contains("description") &&
+      !(root["description"].is_string() && root["description"].get_ref<const std::string&>().size() <= 4096)) {
     c.fail("/description", "expected a string of at most 4096 bytes, got " + shown(root["description"]));
   }
   if (root.contains("samples")) spec.samples = c.count(root["samples"], "/samples", 1, SweepSpec::kMaxRuns, 1);
   if (root.contains("seed")) {
-    if (root["seed"].is_number_unsigned()) spec.seed = root["seed"].get<std::uint64_t>();
-    else c.fail("/seed", "expected a whole number from 0 to 2^64 - 1, got " + shown(root["seed"]));
+    if (root["seed"].is_number_unsigned())
+      spec.seed = root["seed"].get<std::uint64_t>();
+    else
+      c.fail("/seed", "expected a whole number from 0 to 2^64 - 1, got " + shown(root["seed"]));
   }
-  if (root.contains("modes")) {
-    const json& m = root["modes"];
-    std::set<SimulationMode> chosen;
-    if (!m.is_array() || m.empty() || m.size() > 3) c.fail("/modes", "expected 1 to 3 of \"rules\", \"compat\", \"bullet\", got " + shown(m));
-    for (std::size_t k = 0; m.is_array() && m.size() <= 3 && k < m.size(); ++k) {
-      const auto mode = m[k].is_string() ? simulationModeFromString(m[k].get<std::string>()) : std::nullopt;
-      if (!mode || chosen.count(*mode)) c.fail("/modes/" + std::to_string(k), "expected one of \"rules\", \"compat\", \"bullet\", each once, got " + shown(m[k]));
-      else chosen.insert(*mode);
-    }
-    for (SimulationMode mode : kAllModes) {
-      if (chosen.count(mode)) spec.modes.push_back(mode);
-    }
-  }
-  if (root.contains("record")) {
-    const json& r = root["record"];
-    spec.record = {false, false, false, false, false};
-    if (!r.is_array() || r.size() > 5) c.fail("/record", "expected an array of what to record, got " + shown(r));
-    for (std::size_t k = 0; r.is_array() && r.size() <= 5 && k < r.size(); ++k) {
-      const std::string what = r[k].is_string() ? r[k].get<std::string>() : "";
-      bool* flag = what == "positions" ? &spec.record.positions : what == "events" ? &spec.record.events
-                 : what == "distance" ? &spec.record.distance : what == "cost" ? &spec.record.cost
-                 : what == "state_hash" ? &spec.record.stateHash : nullptr;
-      if (!flag) c.fail("/record/" + std::to_string(k), "expected one of \"positions\", \"events\", \"distance\", \"cost\", \"state_hash\", got " + shown(r[k]));
-      else *flag = true;
-    }
-  }
+  if (root.contains("modes")) spec.modes = modes(root["modes"], c);
+  if (root.contains("record")) spec.record = record(root["record"], c);
   if (root.contains("scene")) spec.scene = baseScene(root["scene"], "/scene", source, shipped, c, spec.sceneSource);
   if (!spec.scene.is_object()) return spec;
   // Each run's scene is built from the base's text: its size bounds the
@@ -290,12 +257,14 @@ SweepSpec read(const json& root, const std::string& source, const std::string& s
   spec.entities.clear();
   for (const json& e : spec.scene.value("entities", json::array())) spec.entities.push_back(e.value("name", ""));
   if (spec.entities.size() > SweepSpec::kMaxEntities) {
-    c.fail("/scene", "expected a scene of at most " + std::to_string(SweepSpec::kMaxEntities) + " entities, got " + std::to_string(spec.entities.size()));
+    c.fail("/scene", "expected a scene of at most " + std::to_string(SweepSpec::kMaxEntities) + " entities, got " +
+                         std::to_string(spec.entities.size()));
   }
   if (root.contains("set")) {
     const json& set = root["set"];
     if (!set.is_object() || set.size() > SweepSpec::kMaxPointers) {
-      c.fail("/set", "expected an object of at most " + std::to_string(SweepSpec::kMaxPointers) + " pointers and their values, got " + shown(set));
+      c.fail("/set", "expected an object of at most " + std::to_string(SweepSpec::kMaxPointers) +
+                         " pointers and their values, got " + shown(set));
     } else {
       for (auto it = set.begin(); it != set.end(); ++it) {
         const std::string at = "/set/" + escapePointerToken(it.key());
@@ -309,23 +278,28 @@ SweepSpec read(const json& root, const std::string& source, const std::string& s
         }
         // null removes a key (to give a push an angle in place of a direction).
         json& parent = spec.scene[p.parent_pointer()];
-        if (parent.is_object()) parent.erase(p.back());
-        else c.fail(at, "expected a key of an object to remove (null), got an element of an array");
+        if (parent.is_object())
+          parent.erase(p.back());
+        else
+          c.fail(at, "expected a key of an object to remove (null), got an element of an array");
       }
     }
   }
   if (root.contains("parameters")) {
     const json& ps = root["parameters"];
     if (!ps.is_array() || ps.size() > SweepSpec::kMaxParameters) {
-      c.fail("/parameters", "expected an array of at most " + std::to_string(SweepSpec::kMaxParameters) + " parameters, got " + shown(ps));
+      c.fail("/parameters", "expected an array of at most " + std::to_string(SweepSpec::kMaxParameters) +
+                                " parameters, got " + shown(ps));
     } else {
-      for (std::size_t k = 0; k < ps.size(); ++k) spec.parameters.push_back(parameter(ps[k], "/parameters/" + std::to_string(k), spec.scene, c));
+      for (std::size_t k = 0; k < ps.size(); ++k)
+        spec.parameters.push_back(parameter(ps[k], "/parameters/" + std::to_string(k), spec.scene, c));
     }
   }
   // Each parameter names a column of its own.
   std::set<std::string> names{"run", "problem"};
   for (const SweepParameter& p : spec.parameters) {
-    const bool modeLike = p.name.rfind("rules.", 0) == 0 || p.name.rfind("compat.", 0) == 0 || p.name.rfind("bullet.", 0) == 0;
+    const bool modeLike =
+        p.name.rfind("rules.", 0) == 0 || p.name.rfind("compat.", 0) == 0 || p.name.rfind("bullet.", 0) == 0;
     if (!names.insert(p.name).second || modeLike) {
       c.fail(p.at, "expected a name no other column has, got \"" + shownText(p.name, 40) + "\"");
     }
@@ -337,7 +311,8 @@ SweepSpec read(const json& root, const std::string& source, const std::string& s
     if (p.kind == SweepParameter::Kind::List) runs *= static_cast<double>(p.values.size());
   }
   if (runs > static_cast<double>(SweepSpec::kMaxRuns)) {
-    c.fail("/parameters", "expected at most " + std::to_string(SweepSpec::kMaxRuns) + " runs (the grid's points x samples), got " + fixed(runs, 0));
+    c.fail("/parameters", "expected at most " + std::to_string(SweepSpec::kMaxRuns) +
+                              " runs (the grid's points x samples), got " + fixed(runs, 0));
     return spec;
   }
   if (checkEveryRun) checkRuns(spec, c);
@@ -349,7 +324,7 @@ SweepSpec read(const json& root, const std::string& source, const std::string& s
 SweepSpec loadSweepText(const std::string& text, const std::string& source, const std::string& shippedScenes,
                         bool checkEveryRun) {
   JsonText parsed = parseJsonText(text, source, SweepSpec::kMaxFileBytes, SweepSpec::kMaxDepth);
-  Checker c;
+  SpecChecker c;
   c.problems = duplicateProblems(*parsed.locator);
   SweepSpec spec = read(parsed.root, source, shippedScenes, checkEveryRun, c);
   if (!c.problems.empty()) {

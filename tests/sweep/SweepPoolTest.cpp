@@ -7,6 +7,7 @@
 #include <set>
 
 #include "sim/ModeComparison.h"
+#include "scenario/ScenarioError.h"
 #include "scenario/ScenarioLoader.h"
 #include "sweep/SweepPool.h"
 #include "sweep/SweepRun.h"
@@ -84,6 +85,30 @@ TEST(SweepPool, ARowComparesWithTheRulesAsCompareDoes) {
   EXPECT_EQ(row.at(at("problem")), "");
   EXPECT_EQ(firstReason("diverges: stopped short, rotated"), "stopped short");
   EXPECT_EQ(firstReason("agrees"), "");
+}
+
+// A run that does not start still gives a whole row, saying why: bodies
+// overlapping (found when a mode builds the scene), or, in a spec a worker
+// loads without checking every run, a value the scene refuses.
+TEST(SweepPool, ARunThatCannotStartGivesAWholeRowWithItsProblem) {
+  const auto spec = [](const std::string& pointer, const std::string& values, bool checked) {
+    return loadSweepText(R"({"version": 1, "name": "bad", "scene": "example2_two_cubes",
+      "parameters": [{"name": "x", "pointer": ")" + pointer + R"(", "values": )" + values + R"(}],
+      "modes": ["rules", "bullet"]})",
+                         "bad.json", kShipped, checked);
+  };
+  const SweepSpec overlapping = spec("/entities/1/position/0", "[0.2, -0.3]", true);  // run 1: B on A
+  const SweepRow good = runSweepRow(overlapping, 0), bad = runSweepRow(overlapping, 1);
+  ASSERT_EQ(bad.size(), sweepColumns(overlapping).size());
+  EXPECT_EQ(good.back(), "");
+  EXPECT_NE(bad.back().get<std::string>().find("overlaps"), std::string::npos) << bad.back();
+  EXPECT_TRUE(bad.at(2).is_null());
+
+  EXPECT_THROW(spec("/entities/1/mass", "[1, -2]", true), ScenarioError);
+  const SweepSpec unchecked = spec("/entities/1/mass", "[1, -2]", false);
+  const SweepRow refused = runSweepRow(unchecked, 1);
+  ASSERT_EQ(refused.size(), sweepColumns(unchecked).size());
+  EXPECT_NE(refused.back().get<std::string>().find("expected a positive number"), std::string::npos) << refused.back();
 }
 
 TEST(SweepPool, StopsBetweenRowsWhenAsked) {

@@ -54,7 +54,9 @@ TEST(SweepTable, ResumesAfterTheLastWholeRowAndDropsACutOne) {
     ASSERT_EQ(kept.size(), 2u);
     const SweepRow again = runSweepRow(spec, 1);
     for (std::size_t c = 0; c < columns.size(); ++c) {
-      if (!isTimingColumn(columns[c])) EXPECT_EQ(kept[1][c], again[c]) << columns[c];
+      if (!isTimingColumn(columns[c])) {
+        EXPECT_EQ(kept[1][c], again[c]) << columns[c];
+      }
     }
     // The next row goes after them, whole.
     table.append(again);
