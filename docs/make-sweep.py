@@ -13,7 +13,8 @@ Between  <!-- NAME: begin -->  and  <!-- NAME: end -->  in docs/sweep.md:
   dask   docs/sweeps/example2_angle_friction.json through tabletop.sweep on
          a dask LocalCluster of one worker process against tabletop.sweep
          here with one job, REPEATS times each: the cost per run of the
-         cluster's path.
+         cluster's path, in wall time and in CPU time (this process's and
+         the worker's, which the load of other programs does not inflate).
 Usage, after building (the Python module in build/python):
     docs/make-sweep.py [TABLETOP [maps|speed|dask ...]]
 """
@@ -91,7 +92,7 @@ def speed(tabletop, tmp):
     one, many = statistics.median(walls[1]), statistics.median(walls[cores])
     cpu_one, cpu_many = statistics.median(cpus[1]), statistics.median(cpus[cores])
     # With the cores free, the workers' CPU time is split evenly among them
-    # (a run is about 20 ms, a thousand of them hand out evenly).
+    # (a thousand short runs, handed out one at a time, share out evenly).
     free = cpu_one / (cpu_many / cores)
     return (f"| runs | --jobs | wall [s] | CPU, all processes [s] |\n"
             f"|---|---|---|---|\n"
@@ -102,31 +103,57 @@ def speed(tabletop, tmp):
             f"the CPU times give {free:.2f}x on {cores} free cores.\n")
 
 
+def cpu_of_this_process():
+    """User and system time of this process, all its threads, s."""
+    r = resource.getrusage(resource.RUSAGE_SELF)
+    return r.ru_utime + r.ru_stime
+
+
 def dask():
     # The cluster's worker processes find the module as this one does.
     module = str(ROOT / "build" / "python")
     sys.path.insert(0, module)
     os.environ["PYTHONPATH"] = os.pathsep.join(p for p in (module, os.environ.get("PYTHONPATH")) if p)
+    # Dask's statistical profiler samples a busy worker every 10 ms; off, as docs/sweep.md advises.
+    os.environ["DASK_DISTRIBUTED__WORKER__PROFILE__ENABLED"] = "False"
     import distributed  # pylint: disable=import-outside-toplevel
     import tabletop  # pylint: disable=import-outside-toplevel
     spec = str(SWEEPS / "example2_angle_friction.json")
-    here, there = [], []
+    walls, cpus = {"here": [], "there": []}, {"here": [], "there": []}
     with distributed.LocalCluster(n_workers=1, threads_per_worker=1, processes=True,
                                   dashboard_address=None) as cluster, distributed.Client(cluster) as client:
+        def workers_cpu():
+            return sum(client.run(cpu_of_this_process).values())
         for _ in range(REPEATS):
-            start = time.monotonic()
+            start, cpu = time.monotonic(), cpu_of_this_process()
             local = tabletop.sweep(spec)
-            here.append(time.monotonic() - start)
-            start = time.monotonic()
+            walls["here"].append(time.monotonic() - start)
+            cpus["here"].append(cpu_of_this_process() - cpu)
+            start, cpu, worker = time.monotonic(), cpu_of_this_process(), workers_cpu()
             remote = tabletop.sweep(spec, client)
-            there.append(time.monotonic() - start)
+            walls["there"].append(time.monotonic() - start)
+            cpus["there"].append(cpu_of_this_process() - cpu + workers_cpu() - worker)
+        # What the idle cluster costs (its event loops, heartbeats) per second.
+        start, cpu, worker = time.monotonic(), cpu_of_this_process(), workers_cpu()
+        time.sleep(10)
+        idle = (cpu_of_this_process() - cpu + workers_cpu() - worker) / (time.monotonic() - start)
     same = [c for c in local.columns if not c.endswith(".wall_s")]
     assert local[same].equals(remote[same]), "the cluster's rows differ"
     runs = len(local)
-    a, b = statistics.median(here), statistics.median(there)
-    return (f"| runs | here, one job [s] | a LocalCluster of one worker [s] | cost per run of the cluster's path |\n"
-            f"|---|---|---|---|\n"
-            f"| {runs} | {a:.1f} | {b:.1f} | {1000 * (b - a) / runs:.1f} ms |\n")
+    wall = {k: statistics.median(v) for k, v in walls.items()}
+    cpu = {k: statistics.median(v) for k, v in cpus.items()}
+    return (f"| runs | | here, one job | a LocalCluster of one worker | cost per run of the cluster's path |\n"
+            f"|---|---|---|---|---|\n"
+            f"| {runs} | wall [s] | {wall['here']:.1f} | {wall['there']:.1f} | "
+            f"{1000 * (wall['there'] - wall['here']) / runs:.1f} ms |\n"
+            f"| | CPU [s] | {cpu['here']:.1f} | {cpu['there']:.1f} | "
+            f"{1000 * (cpu['there'] - cpu['here']) / runs:.1f} ms |\n"
+            f"| | CPU less the idle cluster's [s] | {cpu['here']:.1f} | {cpu['there'] - idle * wall['there']:.1f} | "
+            f"{1000 * (cpu['there'] - idle * wall['there'] - cpu['here']) / runs:.1f} ms |\n\n"
+            f"Medians of {REPEATS}. CPU is this process's (the client and the LocalCluster's scheduler) and the "
+            f"worker process's; idle, they take {idle:.3f} s of CPU a second, which the cluster's wall time, "
+            f"stretched by the other programs running (load average {os.getloadavg()[0]:.1f} at the end), "
+            f"multiplies.\n")
 
 
 def main():
