@@ -7,7 +7,7 @@ import sys
 import pytest
 
 import tabletop
-from conftest import SOURCE
+from conftest import SOURCE, schema, without_comments
 
 # Example 2 with B's mass and the push's step varied: 12 runs in two modes.
 SPEC = {
@@ -71,3 +71,19 @@ def test_a_dask_cluster_of_two_worker_processes_gives_the_same_rows(local, table
     assert [r["bullet.state_hash"] for r in rows] == list(local["bullet.state_hash"])
     for row, (_, ours) in zip(rows, comparable(local).iterrows()):
         assert all(row[column] == value for column, value in ours.items())
+
+
+@pytest.mark.parametrize("path", sorted((SOURCE / "docs" / "sweeps").glob("*.json")), ids=lambda p: p.stem)
+def test_every_shipped_spec_meets_the_schema(path):
+    import jsonschema  # pylint: disable=import-outside-toplevel
+    jsonschema.Draft202012Validator.check_schema(schema("sweep.schema.json"))
+    jsonschema.validate(json.loads(without_comments(path.read_text())), schema("sweep.schema.json"))
+
+
+def test_the_schema_refuses_what_the_loader_refuses():
+    import jsonschema  # pylint: disable=import-outside-toplevel
+    bad = dict(SPEC, parameters=[{"pointer": "/entities/1/mass", "range": {"from": 1, "to": 2, "count": 0}}])
+    with pytest.raises(jsonschema.ValidationError):
+        jsonschema.validate(bad, schema("sweep.schema.json"))
+    with pytest.raises(tabletop.ScenarioError, match="at /parameters/0/range/count: expected a whole number from 1"):
+        tabletop.sweep(bad)
