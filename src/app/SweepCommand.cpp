@@ -29,7 +29,7 @@ std::string agreementSummary(const SweepSpec& spec, const std::vector<SweepRow>&
     std::size_t agree = 0;
     for (const SweepRow& row : rows) agree += row.at(c) == true;
     s += std::string(s.empty() ? "; " : ", ") + std::string(toString(m)) + " agrees with the rules in " +
-         std::to_string(agree) + " of " + std::to_string(rows.size()) + " runs";
+         std::to_string(agree) + " of " + std::to_string(rows.size()) + (rows.size() == 1 ? " run" : " runs");
   }
   return s;
 }
@@ -112,7 +112,7 @@ int runSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) 
         << where << (table ? "; the same command goes on from there" : "") << "\n";
     return kExitInterrupted;
   }
-  (table ? out : err) << spec.name << ": " << rows.size() << " runs"
+  (table ? out : err) << spec.name << ": " << rows.size() << (rows.size() == 1 ? " run" : " runs")
                       << (first ? " (" + std::to_string(first) + " done before)" : "") << where
                       << agreementSummary(spec, rows) << "\n";
   if (options.plot) {
