@@ -13,7 +13,7 @@ include(CMakePackageConfigHelpers)
 
 # Every library but the command line's own, named without the prefix.
 set(TABLETOP_EXPORTED
-  options core io rules physics compat scenario sim scenes measure
+  options core io rules physics compat scenario sim scenes measure sweep
   draw image render headless session viewer)
 foreach(_name IN LISTS TABLETOP_EXPORTED)
   set_target_properties(tabletop_${_name} PROPERTIES EXPORT_NAME ${_name})

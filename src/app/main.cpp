@@ -13,6 +13,7 @@
 #include "app/PlainHelp.h"
 #include "app/RenderCommand.h"
 #include "app/RunCommand.h"
+#include "app/SweepCommand.h"
 #include "app/ViewCommand.h"
 
 namespace {
@@ -96,6 +97,12 @@ int main(int argc, char** argv) {
       "bench", "Measure speed against error: sweep timesteps and solver iterations over scenes, print the fronts");
   addBenchOptions(*benchCommand, bench);
   benchCommand->callback([&] { status = runBench(bench, std::cout, std::cerr); });
+
+  SweepOptions sweep;
+  CLI::App* sweepCommand = app.add_subcommand(
+      "sweep", "Run a scene many times with parameters varied, in several modes, on every core: one table row per run");
+  addSweepOptions(*sweepCommand, sweep);
+  sweepCommand->callback([&] { status = runSweep(sweep, std::cout, std::cerr); });
 
   try {
     return parseAndRun(app, argc, argv, status);

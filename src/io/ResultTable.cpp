@@ -36,8 +36,6 @@ std::string toText(const ResultTable& table) {
   return o.str();
 }
 
-namespace {
-
 std::string csvValue(const nlohmann::json& v) {
   if (v.is_boolean()) return v.get<bool>() ? "1" : "0";
   if (v.is_string()) return csvField(v.get<std::string>());
@@ -46,10 +44,8 @@ std::string csvValue(const nlohmann::json& v) {
     std::snprintf(text, sizeof text, "%.17g", v.get<double>());
     return text;
   }
-  return v.is_null() ? "" : v.dump();
+  return v.is_null() ? "" : csvField(v.dump());
 }
-
-}  // namespace
 
 std::string toCsv(const ResultTable& table) {
   std::ostringstream o;

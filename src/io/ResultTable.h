@@ -42,6 +42,10 @@ std::string toText(const ResultTable& table);
 /// 17 significant digits, booleans as 1 and 0).
 std::string toCsv(const ResultTable& table);
 
+/// One value as a CSV field: numbers to 17 significant digits, booleans as
+/// 1 and 0, null as nothing, strings and anything else quoted as needed.
+std::string csvValue(const nlohmann::json& v);
+
 /// An array of one object per row, keyed by the columns' keys.
 nlohmann::json toJson(const ResultTable& table);
 

@@ -15,6 +15,7 @@
 #include "draw/CameraChoice.h"
 #include "draw/SceneDrawing.h"
 #include "headless/HeadlessFrames.h"
+#include "python/SweepBinding.h"
 #include "scenario/ScenarioError.h"
 #include "scenario/ScenarioLoader.h"
 #include "sim/DivergenceGuard.h"
@@ -198,6 +199,7 @@ PYBIND11_MODULE(tabletop, m) {
   });
 
   m.attr("__version__") = TABLETOP_VERSION;
+  addSweep(m);
 
   py::class_<Scenario>(m, "Scenario", "A scene and its script, as loaded and checked from a file or from objects.")
       .def_readonly("name", &Scenario::name, "The scenario's name.")

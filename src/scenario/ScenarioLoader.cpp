@@ -2,17 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <set>
 #include <sstream>
 #include <unordered_map>
-
-#include <fcntl.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
-#include <cerrno>
 
 #include <nlohmann/json.hpp>
 
@@ -21,6 +14,7 @@
 #include "core/Text.h"
 #include "scenario/JsonFields.h"
 #include "scenario/JsonLocator.h"
+#include "scenario/JsonText.h"
 #include "scenario/ScenarioError.h"
 #include "scenario/ScenarioParts.h"
 
@@ -117,64 +111,6 @@ Scenario read(const json& root, std::vector<Problem>& problems) {
   return s;
 }
 
-// The 1-based line and column of a byte offset in `text`.
-void locate(Problem& p, const std::string& text, std::size_t offset) {
-  const JsonLocator::Location at = JsonLocator::locate(text, offset);
-  p.line = at.line;
-  p.column = at.column;
-}
-
-// What follows nlohmann's "[json.exception.parse_error.101] parse error at
-// line 3, column 5: " (or its other exceptions' "[json.exception...] ").
-std::string reason(const std::string& what) {
-  const std::size_t colon = what.find(": ", what.find("parse error"));
-  if (what.find("parse error") != std::string::npos && colon != std::string::npos) {
-    return what.substr(colon + 2);
-  }
-  const std::size_t close = what.find("] ");
-  return close == std::string::npos ? what : what.substr(close + 2);
-}
-
-// `message` with each value it quotes ('...') cut to kMaxQuotedBytes, as
-// the loader's own messages show values: a 1 MB number stays one short line.
-std::string cutQuotes(const std::string& message) {
-  std::string out;
-  std::size_t from = 0;
-  for (;;) {
-    const std::size_t open = message.find('\'', from);
-    const std::size_t close = open == std::string::npos ? open : message.find('\'', open + 1);
-    if (close == std::string::npos) return out + message.substr(from);
-    out += message.substr(from, open + 1 - from);
-    out += shownText(std::string_view(message).substr(open + 1, close - open - 1), ScenarioLoader::kMaxQuotedBytes);
-    out += '\'';
-    from = close + 1;
-  }
-}
-
-Problem parseProblem(const json::parse_error& e, const std::string& text) {
-  Problem p{"", "not valid JSON: " + cutQuotes(reason(e.what()))};
-  locate(p, text, e.byte == 0 ? 0 : e.byte - 1);
-  return p;
-}
-
-// Other parser failures (a number too large for a double) give no
-// position; the offending token, which the message quotes, is found among
-// the text's tokens instead (not in a comment or a string).
-Problem valueProblem(const json::exception& e, const std::string& text) {
-  const std::string why = reason(e.what());
-  Problem p{"", "not valid JSON: " + cutQuotes(why)};
-  const std::size_t open = why.find('\'');
-  const std::size_t close = why.find('\'', open + 1);
-  if (open != std::string::npos && close != std::string::npos) {
-    const auto where = JsonLocator::findToken(text, why.substr(open + 1, close - open - 1));
-    if (where) {
-      p.line = where->line;
-      p.column = where->column;
-    }
-  }
-  return p;
-}
-
 }  // namespace
 
 std::string ScenarioLoader::runSizeProblem(const Settings& settings, std::size_t entities) {
@@ -191,42 +127,10 @@ std::string ScenarioLoader::runSizeProblem(const Settings& settings, std::size_t
 }
 
 Scenario ScenarioLoader::loadText(const std::string& text, const std::string& source) {
-  if (text.size() > kMaxFileBytes) {
-    throw ScenarioError(source, {{"", "expected at most " + std::to_string(kMaxFileBytes) + " bytes, got " +
-                                          std::to_string(text.size())}});
-  }
-  // nlohmann's parser stops at a NUL byte as at the end of the text, and
-  // would accept what comes before it.
-  if (const std::size_t nul = text.find('\0'); nul != std::string::npos) {
-    Problem p{"", "not valid JSON: expected text, got a NUL byte"};
-    locate(p, text, nul);
-    throw ScenarioError(source, {p});
-  }
-  // Deep nesting is refused before anything recurses into it (showing a
-  // value, the locator).
-  if (const auto deep = JsonLocator::tooDeep(text, kMaxDepth)) {
-    Problem p{"", "expected arrays and objects nested at most " + std::to_string(kMaxDepth) + " deep"};
-    p.line = deep->line;
-    p.column = deep->column;
-    throw ScenarioError(source, {p});
-  }
-  json root;
-  try {
-    root = json::parse(text, nullptr, true, /*ignore_comments=*/true);
-  } catch (const json::parse_error& e) {
-    throw ScenarioError(source, {parseProblem(e, text)});
-  } catch (const json::exception& e) {
-    throw ScenarioError(source, {valueProblem(e, text)});
-  }
-  auto locator = std::make_shared<const JsonLocator>(text);
-  std::vector<Problem> problems;
-  // The parser keeps the last of two values under one key, silently.
-  for (const JsonLocator::Duplicate& d : locator->duplicates()) {
-    problems.push_back({d.pointer,
-                        "expected each key once in an object, but it was given already at line " +
-                            std::to_string(d.first.line) + ", column " + std::to_string(d.first.column),
-                        d.later.line, d.later.column});
-  }
+  JsonText parsed = parseJsonText(text, source, kMaxFileBytes, kMaxDepth);
+  const json& root = parsed.root;
+  auto locator = std::move(parsed.locator);
+  std::vector<Problem> problems = duplicateProblems(*locator);
   Scenario s = read(root, problems);
   s.file = source;
   s.locator = std::move(locator);
@@ -239,39 +143,7 @@ std::string ScenarioLoader::sourceName(const std::string& path) {
 }
 
 Scenario ScenarioLoader::loadFile(const std::string& path) {
-  // A regular file, a pipe (`tabletop run <(generate)`) or standard input
-  // ("-"), each read to at most kMaxFileBytes: not a directory or a device
-  // (/dev/zero never ends).
-  const std::string source = sourceName(path);
-  int fd = STDIN_FILENO;
-  if (path != "-") {
-    struct stat info {};
-    if (::stat(path.c_str(), &info) != 0) throw ScenarioError(source, {{"", "cannot open the file for reading"}});
-    if (!S_ISREG(info.st_mode) && !S_ISFIFO(info.st_mode)) {
-      throw ScenarioError(source, {{"", "expected a regular file or a pipe"}});
-    }
-    // Not blocking in open(): a named pipe that no one writes to reads as
-    // empty instead of waiting for a writer forever.
-    fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
-    if (fd < 0) throw ScenarioError(source, {{"", "cannot open the file for reading"}});
-    ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
-  }
-  std::string text;
-  char chunk[1 << 16];
-  bool failed = false;
-  while (text.size() <= kMaxFileBytes) {
-    const ssize_t n = ::read(fd, chunk, sizeof chunk);
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) failed = true;
-    if (n <= 0) break;
-    text.append(chunk, static_cast<std::size_t>(n));
-  }
-  if (fd != STDIN_FILENO) ::close(fd);
-  if (failed) throw ScenarioError(source, {{"", "cannot read the file"}});
-  if (text.size() > kMaxFileBytes) {
-    throw ScenarioError(source, {{"", "expected at most " + std::to_string(kMaxFileBytes) + " bytes, got more"}});
-  }
-  return loadText(text, source);
+  return loadText(readTextFile(path, kMaxFileBytes), sourceName(path));
 }
 
 }  // namespace tabletop

@@ -89,42 +89,62 @@ std::string verdict(const Vec3& start, const ModeOutcome& rules, const ModeOutco
   return out;
 }
 
+RecordedRun runRecorded(const Scenario& scenario, const Settings& settings, SimulationMode mode,
+                        const StepObserver& afterStep) {
+  RecordedRun out;
+  std::unique_ptr<Simulation> sim = buildSimulation(scenario, settings, mode);
+  out.paths.resize(scenario.entities.size());
+  const auto record = [&out](const Simulation& s) {
+    const std::vector<EntityState> states = s.snapshot();
+    for (std::size_t i = 0; i < states.size(); ++i) out.paths[i].points.push_back(states[i].position);
+  };
+  record(*sim);
+  double next = kSampleInterval;
+  out.run = runScript(scenario, settings, *sim, [&](const Simulation& s) {
+    if (afterStep) afterStep(s);
+    if (s.time() + 1e-12 < next) return;
+    next += kSampleInterval;
+    record(s);
+  });
+  record(*sim);
+  return out;
+}
+
+std::vector<ModeOutcome> againstRules(const Scenario& scenario, const RecordedRun& rules, RecordedRun other) {
+  std::vector<ModeOutcome> outcomes(scenario.entities.size());
+  for (std::size_t i = 0; i < outcomes.size(); ++i) {
+    const std::string& name = scenario.entities[i].name;
+    ModeOutcome reference;
+    reference.state = rules.run.entities[i];
+    reference.edge = firstEdge(rules.run, name);
+    ModeOutcome& out = outcomes[i];
+    out.state = other.run.entities[i];
+    out.edge = firstEdge(other.run, name);
+    out.trajectory = std::move(other.paths[i]);
+    out.fromRules = (out.state.position - reference.state.position).length();
+    out.verdict = verdict(rules.paths[i].points.front(), reference, out);
+  }
+  return outcomes;
+}
+
 Comparison compareModes(const Scenario& scenario, const Settings& settings, const StepObserver& afterStep) {
   Comparison c;
   c.scenario = scenario.name;
   c.file = scenario.file;
-  const std::size_t n = scenario.entities.size();
-  std::array<std::vector<Trajectory>, 3> paths;
-  for (std::size_t m = 0; m < 3; ++m) {
-    std::unique_ptr<Simulation> sim = buildSimulation(scenario, settings, kAllModes[m]);
-    paths[m].resize(n);
-    const auto record = [&paths, m](const Simulation& s) {
-      const std::vector<EntityState> states = s.snapshot();
-      for (std::size_t i = 0; i < states.size(); ++i) paths[m][i].points.push_back(states[i].position);
-    };
-    record(*sim);
-    double next = kSampleInterval;
-    c.runs[m] = runScript(scenario, settings, *sim, [&](const Simulation& s) {
-      if (afterStep) afterStep(s);
-      if (s.time() + 1e-12 < next) return;
-      next += kSampleInterval;
-      record(s);
-    });
-    record(*sim);
-  }
-  for (std::size_t i = 0; i < n; ++i) {
+  std::array<RecordedRun, 3> recorded;
+  for (std::size_t m = 0; m < 3; ++m) recorded[m] = runRecorded(scenario, settings, kAllModes[m], afterStep);
+  for (std::size_t m = 0; m < 3; ++m) c.runs[m] = recorded[m].run;
+  std::array<std::vector<ModeOutcome>, 3> outcomes;
+  for (std::size_t m = 1; m < 3; ++m) outcomes[m] = againstRules(scenario, recorded[0], std::move(recorded[m]));
+  for (std::size_t i = 0; i < scenario.entities.size(); ++i) {
     EntityComparison e;
     e.name = scenario.entities[i].name;
-    e.start = paths[0][i].points.front();
-    for (std::size_t m = 0; m < 3; ++m) {
-      ModeOutcome& out = e.modes[m];
-      out.state = c.runs[m].entities[i];
-      out.edge = firstEdge(c.runs[m], e.name);
-      out.trajectory = std::move(paths[m][i]);
-      out.fromRules = (out.state.position - c.runs[0].entities[i].position).length();
-    }
+    e.start = recorded[0].paths[i].points.front();
+    e.modes[0].state = c.runs[0].entities[i];
+    e.modes[0].edge = firstEdge(c.runs[0], e.name);
+    e.modes[0].trajectory = std::move(recorded[0].paths[i]);
     e.modes[0].verdict = "reference";
-    for (std::size_t m = 1; m < 3; ++m) e.modes[m].verdict = verdict(e.start, e.modes[0], e.modes[m]);
+    for (std::size_t m = 1; m < 3; ++m) e.modes[m] = std::move(outcomes[m][i]);
     c.entities.push_back(std::move(e));
   }
   return c;

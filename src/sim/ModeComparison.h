@@ -45,6 +45,20 @@ struct Comparison {
 /// On-table positions within this of the rules' agree, metres.
 inline constexpr double kAgreeDistance = 1e-3;
 
+/// One mode's run, with each entity's positions sampled as it went.
+struct RecordedRun {
+  RunResult run;
+  std::vector<Trajectory> paths;  ///< like the scenario's entities
+};
+
+/// Runs `scenario` in `mode`, sampling trajectories every 1/120 s.
+RecordedRun runRecorded(const Scenario& scenario, const Settings& settings, SimulationMode mode,
+                        const StepObserver& afterStep = {});
+
+/// Each entity's outcome in `other` (its state, edge, trajectory, distance
+/// from the rules' final centre and verdict) against the run of the rules.
+std::vector<ModeOutcome> againstRules(const Scenario& scenario, const RecordedRun& rules, RecordedRun other);
+
 /// Runs `scenario` in every mode (recording trajectories) and compares each
 /// entity's outcome with the rules'. Throws ScenarioError if a mode cannot
 /// run the scenario. `afterStep`, when given, sees every mode's simulation

@@ -1,0 +1,32 @@
+#pragma once
+
+#include <iosfwd>
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+namespace tabletop {
+
+/// What `tabletop sweep` was asked to do.
+struct SweepOptions {
+  std::string spec;                 ///< the sweep spec (JSON)
+  std::optional<std::string> out;   ///< PREFIX: PREFIX.csv and PREFIX.jsonl, resumed if begun
+  int jobs = 0;                     ///< worker processes; 0: every core
+  std::optional<std::string> plot;  ///< --plot FILE (.png or .svg): the map of the first two parameters
+  std::optional<std::string> scheduler;  ///< --scheduler tcp://HOST:PORT: the runs go to that Dask cluster
+};
+
+/// Declares sweep's options on `command`.
+void addSweepOptions(CLI::App& command, SweepOptions& options);
+
+/// Runs a sweep: every run of the spec not already in the table, on
+/// `jobs` processes (or on the Dask cluster of --scheduler), each row appended as it finishes (in run order); with
+/// no --out the rows go to `out` as JSON lines. A bar with the time left
+/// on `err`; Ctrl-C keeps the rows done (status 130), and a second sweep
+/// with the same --out goes on from there. Then a summary line, and the
+/// map with --plot. A bad spec is kExitBadInput, one located line per
+/// problem.
+int runSweep(const SweepOptions& options, std::ostream& out, std::ostream& err);
+
+}  // namespace tabletop
