@@ -83,15 +83,19 @@ std::pair<double, double> half(double c, double s) {
 // Rx(theta) Rz(phi) of the Euler angles (psi, theta, phi) that turn the
 // body's axes (a, b, p), cyclic, to axes whose third is along the angular
 // momentum L (Landau and Lifshitz 35): L_body = |L| (sin theta sin phi,
-// sin theta cos phi, cos theta). L must not lie along p.
-Quat towardsMomentum(const Axes& L, int ia, int ip) {
-  const double la = L[static_cast<std::size_t>(ia)], lb = L[static_cast<std::size_t>((ip + 2) % 3)];
+// sin theta cos phi, cos theta). L must not lie along p. The product of the
+// two half-angle quaternions is written out (a x p = -b).
+Quat towardsMomentum(const Axes& L, int ia, int ib, int ip) {
+  const double la = L[static_cast<std::size_t>(ia)], lb = L[static_cast<std::size_t>(ib)];
   const double lp = L[static_cast<std::size_t>(ip)];
   const double across = std::sqrt(la * la + lb * lb), size = std::sqrt(across * across + lp * lp);
   const auto [ct, st] = half(lp / size, across / size);
   const auto [cp, sp] = half(lb / across, la / across);
-  const Vec3 a = unit(ia) * st, p = unit(ip) * sp;
-  return Quat{ct, a.x, a.y, a.z} * Quat{cp, p.x, p.y, p.z};
+  Axes v{};
+  v[static_cast<std::size_t>(ia)] = st * cp;
+  v[static_cast<std::size_t>(ib)] = -st * sp;
+  v[static_cast<std::size_t>(ip)] = ct * sp;
+  return {ct * cp, v[0], v[1], v[2]};
 }
 
 }  // namespace
@@ -142,9 +146,14 @@ void FreeRotation::advance(Quat& q, Vec3& bodySpin, double dt) const {
     q = (q * Quat::about(unit(j), w[static_cast<std::size_t>(j)] * dt)).normalized();
     return;
   }
-  std::array<int, 3> order{0, 1, 2};
-  std::sort(order.begin(), order.end(), [&](int i, int j) { return I[static_cast<std::size_t>(i)] < I[static_cast<std::size_t>(j)]; });
   const auto at = [](int i) { return static_cast<std::size_t>(i); };
+  std::array<int, 3> order{0, 1, 2};
+  const auto swapIfAbove = [&](int i, int j) {
+    if (I[at(order[at(i)])] > I[at(order[at(j)])]) std::swap(order[at(i)], order[at(j)]);
+  };
+  swapIfAbove(0, 1);
+  swapIfAbove(1, 2);
+  swapIfAbove(0, 1);
   const double low = I[at(order[0])], mid = I[at(order[1])], high = I[at(order[2])];
   const bool lowPair = mid - low <= kEqualMoments * high, highPair = high - mid <= kEqualMoments * high;
   if (lowPair && highPair) {  // a sphere's moments: the spin is fixed in the body and the world
@@ -199,7 +208,7 @@ void FreeRotation::advance(Quat& q, Vec3& bodySpin, double dt) const {
   }
   const double integral = sum * 2.0 * h / 45.0;
   // Back on sn^2 + cn^2 = 1 and dn^2 + m sn^2 = 1, where the invariants are.
-  const double r = std::hypot(sn, cn);
+  const double r = std::sqrt(sn * sn + cn * cn);
   sn /= r, cn /= r;
   dn = std::sqrt(cn * cn + (1.0 - m) * sn * sn);
   w[at(iq)] = Aq * cn;
@@ -212,9 +221,9 @@ void FreeRotation::advance(Quat& q, Vec3& bodySpin, double dt) const {
   // integral of the third kind) Boole's rule gave above.
   const double size = std::sqrt(sq(L[0]) + sq(L[1]) + sq(L[2]));
   const double turn = size * dt / Ip + size * (1.0 / Iq - 1.0 / Ip) / rate * integral;
-  const int ia = (ip + 1) % 3;
+  const int ia = (ip + 1) % 3, ib = (ip + 2) % 3;
   const Axes L1{I[0] * w[0], I[1] * w[1], I[2] * w[2]};
-  const Quat start = towardsMomentum(L, ia, ip), end = towardsMomentum(L1, ia, ip);
+  const Quat start = towardsMomentum(L, ia, ib, ip), end = towardsMomentum(L1, ia, ib, ip);
   q = (q * start.conjugate() * Quat::about(unit(ip), turn) * end).normalized();
   bodySpin = vec(w);
 }
