@@ -135,7 +135,16 @@ void DynamicsWorld::step(double dt) {
   }
 }
 
+// Bodies touching nothing turn as the free rigid body does (FreeFlight.h):
+// found before the solve (which leaves out their gyroscopic term), their
+// spin set before the integration, their orientation after it.
 void DynamicsWorld::integrateTransforms(btScalar) {
+  freeFlight_.start(startSpins_, partLength_);
+  integrateMotions();
+  freeFlight_.finish();
+}
+
+void DynamicsWorld::integrateMotions() {
   const btScalar timeStep = partLength_;
   const bool smooth = secondOrder_ && smoothAcceleration_ > 0;
   // The poses a mean turn starts from, kept only when a body turns so.
@@ -218,6 +227,7 @@ void DynamicsWorld::performDiscreteCollisionDetection() {
 
 void DynamicsWorld::solveConstraints(btContactSolverInfo& solverInfo) {
   btDispatcher* dispatcher = getDispatcher();
+  freeFlight_.find(m_nonStaticRigidBodies, *dispatcher);
   const bool untouched = dispatcher->getNumManifolds() == 0 &&
                          getBroadphase()->getOverlappingPairCache()->getNumOverlappingPairs() == 0;
   if (untouched) {

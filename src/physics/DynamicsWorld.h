@@ -11,6 +11,7 @@
 #include "physics/ContactIslands.h"
 #include "physics/ContactResult.h"
 #include "physics/FaceEdges.h"
+#include "physics/FreeFlight.h"
 #include "physics/Impacts.h"
 #include "physics/SlipEvents.h"
 
@@ -90,6 +91,9 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   void integrateTransforms(btScalar timeStep) override;
 
  private:
+  // integrateTransforms but for the free bodies' turn (freeFlight_).
+  void integrateMotions();
+  FreeFlight freeFlight_;
   void applyRollingResistance();
   // Each body's velocity and spin now, which the second-order update takes
   // as the part's start (startVelocities_, startSpins_).
