@@ -15,6 +15,8 @@ namespace tabletop {
 ///  - ImplicitWorld: one implicit Euler step in world coordinates;
 ///  - ImplicitBody: one implicit Euler step in the body's own axes (Bullet's
 ///    default), which keeps energy from growing.
+/// Only bodies in contact use it: one touching nothing turns by the free
+/// rigid body's exact solution (physics/step/FreeFlight.h).
 enum class Gyroscopic { None, Explicit, ImplicitWorld, ImplicitBody };
 
 /// The scenario and command-line name ("none", "explicit", "implicit_world",

@@ -6,7 +6,7 @@
 namespace tabletop {
 
 /// How bodies' positions follow from their velocities over a step (see
-/// physics/DynamicsWorld.h):
+/// physics/step/DynamicsWorld.h):
 ///  - Euler: Bullet's own semi-implicit Euler, x += v1 dt, first order;
 ///  - Trapezoid: x += (v0 + v1) dt / 2 wherever the velocity changed
 ///    smoothly, exact for accelerations constant through a step.

@@ -11,6 +11,7 @@
 #include "physics/solver/ContactIslands.h"
 #include "physics/collision/ContactResult.h"
 #include "physics/step/FaceExits.h"
+#include "physics/step/FreeFlight.h"
 #include "physics/step/ImpactSearch.h"
 #include "physics/step/PartGuards.h"
 #include "physics/step/SlipEvents.h"
@@ -95,8 +96,12 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   void solveContacts(Part& part, btContactSolverInfo& solverInfo);
   void dropStalePoints();
   void cutAtNextEvent(Part& part, const ImpactScan& scan);
-  // Stage 7: positions from the velocities (Integration.cpp).
+  // Stage 7: positions from the velocities (Integration.cpp); bodies
+  // touching nothing turn as the free rigid body does (FreeFlight.h).
   void integrate(const Part& part);
+  // integrate but for the free bodies' turn (freeFlight_).
+  void integrateMotions(const Part& part);
+  FreeFlight freeFlight_;
 
   void applyRollingResistance(const Part& part);
   // Each body's velocity and spin now, which the second-order update takes

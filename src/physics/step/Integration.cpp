@@ -37,7 +37,15 @@ void DynamicsWorld::saveStartVelocities() {
   }
 }
 
+// Bodies touching nothing turn as the free rigid body does (FreeFlight.h):
+// their spin set before the integration, their orientation after it.
 void DynamicsWorld::integrate(const Part& part) {
+  freeFlight_.start(startSpins_, part.length);
+  integrateMotions(part);
+  freeFlight_.finish();
+}
+
+void DynamicsWorld::integrateMotions(const Part& part) {
   const btScalar timeStep = part.length;
   const bool smooth = secondOrder_ && smoothAcceleration_ > 0;
   // The poses a mean turn starts from, kept only when a body turns so.

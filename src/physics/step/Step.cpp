@@ -115,6 +115,8 @@ void DynamicsWorld::performDiscreteCollisionDetection() {
 
 void DynamicsWorld::solveContacts(Part& part, btContactSolverInfo& solverInfo) {
   btDispatcher* dispatcher = getDispatcher();
+  // The bodies touching nothing, whose turn is the free rigid body's.
+  freeFlight_.find(m_nonStaticRigidBodies, *dispatcher);
   const bool untouched = dispatcher->getNumManifolds() == 0 &&
                          getBroadphase()->getOverlappingPairCache()->getNumOverlappingPairs() == 0;
   if (untouched) {
