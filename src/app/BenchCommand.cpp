@@ -95,7 +95,7 @@ void addBenchOptions(CLI::App& command, BenchOptions& options) {
   command.add_option("--pile-budget", options.pileBudget,
                      "Wall seconds a pile's tabletop run may take before it stops and larger piles are left out "
                      "(default 120)")
-      ->check(CLI::Range(1.0, 86400.0));
+      ->check(CLI::Range(0.001, 86400.0));
   command.add_flag("--hard", options.hard,
                    "Run each hard case (SCENARIOS/hard) once at its own settings: cost, drift, penetration, "
                    "speed at rest, energy gain");
@@ -224,7 +224,7 @@ int runBench(const BenchOptions& asked, std::ostream& out, std::ostream& err) {
     if (!options.piles.empty()) {
       ResultTable t = pileTable(pilePoints);
       if (pilePoints.size() < options.piles.size()) {
-        t.notes.push_back("(left out over the " + fixed(options.pileBudget, 0) + " s budget:" +
+        t.notes.push_back("(left out after a pile stopped at the budget:" +
                           [&] {
                             std::string left;
                             for (std::size_t i = pilePoints.size(); i < options.piles.size(); ++i) {

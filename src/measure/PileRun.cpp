@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <sstream>
 
 #include "measure/PlainBullet.h"
 #include "physics/World.h"
@@ -28,7 +29,9 @@ PileSide runTabletop(const Scenario& pile, double budgetSeconds) {
     player.runDue();
     while (!player.finished()) {
       if (wall > budgetSeconds) {
-        side.note = "stopped at the " + std::to_string(static_cast<int>(budgetSeconds)) + " s budget";
+        std::ostringstream note;
+        note << "stopped at the " << budgetSeconds << " s budget";
+        side.note = note.str();
         break;
       }
       const auto before = std::chrono::steady_clock::now();
