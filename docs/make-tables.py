@@ -11,12 +11,14 @@ the pages that hold it:
             settings, with 10 sweeps, and in Bullet's own pipeline;
   switches  docs/bench.md: `bench --switches`, each model switch on every
             analytic case and report example;
-  scale     docs/bench.md: `bench --scale`, the cube field of 10 to 1000.
+  scale     docs/bench.md: `bench --scale`, the cube field of 10 to 1000;
+  piles     docs/bench.md: `bench --piles`, the piles of PILES bodies
+            against Bullet's own pipeline.
 Everything but wall times is deterministic, so tests/python/test_samples.py
 fails when a page differs from what the program measures in any cell that
 is not a cost (comparable() blanks those).
-Usage, after building:
-    docs/make-tables.py [TABLETOP]
+Usage, after building (NAME...: only those tables):
+    docs/make-tables.py [TABLETOP [NAME...]]
 """
 import json
 import pathlib
@@ -29,6 +31,8 @@ ROOT = pathlib.Path(__file__).resolve().parents[1]
 RATES = [60, 240, 1000]
 INTEGRATORS = ["trapezoid", "euler"]
 SCALE = [10, 100, 1000]
+PILES = [100, 300, 1000]
+PILE_BUDGET = 600  # s: more than the largest of PILES takes, so no run is cut
 REPEATS = 3
 
 
@@ -152,11 +156,26 @@ def scale(tabletop):
     return lines
 
 
+def piles(tabletop):
+    out = bench(tabletop, "--piles", ",".join(map(str, PILES)), "--pile-budget", str(PILE_BUDGET))
+    rows, k = out["piles"], out["pile_exponents"]
+    lines = ["| bodies | tabletop ms per s | Bullet ms per s | cost ratio | drift over 1 s, mm (Bullet) "
+             "| deepest, mm (Bullet) | energy gained, J (Bullet) |", "|---" * 7 + "|"]
+    for r in rows:
+        lines.append(f"| {r['bodies']} | {cost(r['tabletop_ms_per_s'])} | {cost(r['bullet_ms_per_s'])} "
+                     f"| {r['ratio']:.2g} | {millimetres(r['tabletop_drift_m'])} ({millimetres(r['bullet_drift_m'])}) "
+                     f"| {millimetres(r['tabletop_penetration_m'])} ({millimetres(r['bullet_penetration_m'])}) "
+                     f"| {r['tabletop_energy_gain_j']:.2g} ({r['bullet_energy_gain_j']:.2g}) |")
+    lines.append(f"| cost exponent = | {k['tabletop']:.2f} | {k['bullet']:.2f} | | | | |")
+    return lines
+
+
 TABLES = {
     "analytic": (analytic, ["scenarios/README.md", "docs/bench.md"]),
     "hard": (hard, ["docs/hard-cases.md"]),
     "switches": (switches, ["docs/bench.md"]),
     "scale": (scale, ["docs/bench.md"]),
+    "piles": (piles, ["docs/bench.md"]),
 }
 
 
@@ -198,7 +217,10 @@ def block(name, tabletop):
 
 def main():
     tabletop = str(pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else "build/src/app/tabletop").resolve())
+    names = sys.argv[2:] or list(TABLES)
     for name, (_, pages) in TABLES.items():
+        if name not in names:
+            continue
         text = block(name, tabletop)
         for page in pages:
             path = ROOT / page

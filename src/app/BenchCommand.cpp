@@ -18,6 +18,7 @@
 #include "app/OptionChecks.h"
 #include "app/Progress.h"
 #include "app/RunCommand.h"
+#include "core/Text.h"
 #include "io/AtomicFile.h"
 #include "scenario/ScenarioError.h"
 #include "scenario/ScenarioLoader.h"
@@ -86,6 +87,15 @@ void addBenchOptions(CLI::App& command, BenchOptions& options) {
                      "Time the cube field of these sizes with each model switch (e.g. 10,100,1000,10000)")
       ->delimiter(',')
       ->check(CLI::Range(1, 100000));
+  command.add_option("--piles", options.piles,
+                     "Drop piles of these many mixed bodies (e.g. 100,300,1000) in tabletop and in Bullet's own "
+                     "pipeline: cost, growth exponent, and once settled drift, penetration, energy gain")
+      ->delimiter(',')
+      ->check(CLI::Range(1, 100000));
+  command.add_option("--pile-budget", options.pileBudget,
+                     "Wall seconds a pile's tabletop run may take before it stops and larger piles are left out "
+                     "(default 120)")
+      ->check(CLI::Range(0.001, 86400.0));
   command.add_flag("--hard", options.hard,
                    "Run each hard case (SCENARIOS/hard) once at its own settings: cost, drift, penetration, "
                    "speed at rest, energy gain");
@@ -134,7 +144,7 @@ int runBench(const BenchOptions& asked, std::ostream& out, std::ostream& err) {
 
   const bool sweepAsked =
       options.sweep ||
-      (!options.switches && options.scale.empty() && !options.hard && !options.laws && !options.baseline);
+      (!options.switches && options.scale.empty() && options.piles.empty() && !options.hard && !options.laws && !options.baseline);
   const SweepGrid grid{options.rates, options.iterations, options.integrators};
   const InterruptGuard interrupt;
   std::vector<BenchPoint> points;
@@ -153,6 +163,11 @@ int runBench(const BenchOptions& asked, std::ostream& out, std::ostream& err) {
   if (!options.scale.empty() && !interrupt.requested()) {
     Progress progress(err);
     scalePoints = measureScale(options.scale, options.repeats, hooks(interrupt, progress));
+  }
+  std::vector<PilePoint> pilePoints;
+  if (!options.piles.empty() && !interrupt.requested()) {
+    Progress progress(err);
+    pilePoints = measurePiles(options.piles, options.pileBudget, hooks(interrupt, progress));
   }
   std::vector<HardPoint> hardPoints;
   if (options.hard && !interrupt.requested()) {
@@ -183,6 +198,8 @@ int runBench(const BenchOptions& asked, std::ostream& out, std::ostream& err) {
                           {"switches", toJson(switchTable(switchPoints))},
                           {"scale", toJson(scaleTable(scalePoints))},
                           {"growth_exponents", exponents(scalePoints)},
+                          {"piles", toJson(pileTable(pilePoints))},
+                          {"pile_exponents", pileExponents(pilePoints)},
                           {"hard", toJson(hardTable(hardPoints))}}
                .dump(2)
         << "\n";
@@ -202,6 +219,21 @@ int runBench(const BenchOptions& asked, std::ostream& out, std::ostream& err) {
     }
     if (!scalePoints.empty()) {
       out << gap << toText(scaleTable(scalePoints));
+      gap = "\n";
+    }
+    if (!options.piles.empty()) {
+      ResultTable t = pileTable(pilePoints);
+      if (pilePoints.size() < options.piles.size()) {
+        t.notes.push_back("(left out after a pile stopped at the budget:" +
+                          [&] {
+                            std::string left;
+                            for (std::size_t i = pilePoints.size(); i < options.piles.size(); ++i) {
+                              left += " " + std::to_string(options.piles[i]);
+                            }
+                            return left;
+                          }() + " bodies)");
+      }
+      out << gap << toText(t);
       gap = "\n";
     }
     if (!hardPoints.empty()) {
@@ -236,6 +268,7 @@ int runBench(const BenchOptions& asked, std::ostream& out, std::ostream& err) {
         {"bench.csv", sweepAsked ? sweepTable(points) : ResultTable{}},
         {"switches.csv", switchTable(switchPoints)},
         {"scale.csv", scaleTable(scalePoints)},
+        {"piles.csv", pileTable(pilePoints)},
         {"hard.csv", hardTable(hardPoints)},
         {"laws.csv", lawTable(lawPoints)},
         {"baseline.csv", baselineTable(baselinePoints)}};

@@ -35,6 +35,8 @@ struct BenchOptions {
   bool sweep = false;
   bool switches = false;
   std::vector<int> scale;
+  std::vector<int> piles;    ///< bodies per pile (--piles)
+  double pileBudget = 120;   ///< s of wall time per pile's tabletop run
   bool hard = false;  ///< --hard: run every scene in SCENARIOS/hard once and measure its stability
   bool laws = false;  ///< --laws: the sliding, rolling, step, spinning and bouncing laws over shapes and supports
   bool baseline = false;  ///< --baseline: each scene's cost against Bullet's own default pipeline
@@ -56,7 +58,8 @@ void addBenchOptions(CLI::App& command, BenchOptions& options);
 /// its own settings: cost, error, and whether the outcome is bit-identical
 /// to the defaults'. --scale N,... runs the cube field (CubeField) of each
 /// size with each switch: wall time per step, and the growth exponent of
-/// time against the number of cubes.
+/// time against the number of cubes. --piles N,... drops a pile (Pile) of
+/// each size in tabletop and in Bullet's own pipeline (measurePiles).
 int runBench(const BenchOptions& options, std::ostream& out, std::ostream& err);
 
 }  // namespace tabletop

@@ -7,6 +7,7 @@
 #include "app/GnuplotFile.h"
 #include "core/Text.h"
 #include "scenes/CubeField.h"
+#include "scenes/Pile.h"
 
 namespace tabletop {
 namespace {
@@ -125,6 +126,42 @@ ResultTable scaleTable(const std::vector<ScalePoint>& points) {
   }
   t.notes.push_back("growth exponent k of time per step ~ cubes^k (least squares over the sizes):");
   for (const auto& [switchName, k] : exponents(points)) t.notes.push_back("  " + padded(switchName, 26) + fixed(k, 2));
+  return t;
+}
+
+ResultTable pileTable(const std::vector<PilePoint>& points) {
+  ResultTable t;
+  t.title = "Piles: N mixed bodies (cubes, spheres, boxes, standing cylinders) dropped at once from a grid " +
+            fixed(100.0 * Pile::kGap, 0) + " cm apart, " + fixed(Pile::kSettle + Pile::kWindow, 1) + " s at " +
+            fixed(Pile::kRate, 0) + " Hz; settled: over the last " + fixed(Pile::kWindow, 1) +
+            " s, against Bullet's own pipeline";
+  t.columns = {{"bodies", "bodies"},
+               {"tabletop_ms_per_s", "tabletop [ms/s]"},
+               {"bullet_ms_per_s", "Bullet [ms/s]"},
+               {"ratio", "ratio"},
+               {"tabletop_drift_m", "drift [mm]"},
+               {"bullet_drift_m", "Bullet drift [mm]"},
+               {"tabletop_penetration_m", "deepest [mm]"},
+               {"bullet_penetration_m", "Bullet deepest [mm]"},
+               {"tabletop_energy_gain_j", "gain [J]"},
+               {"bullet_energy_gain_j", "Bullet gain [J]"},
+               {"simulated_s", "simulated [s]"},
+               {"note", "note"}};
+  // A settled figure, or "-" when the window was not reached.
+  const auto settled = [](const PileSide& s, double value, double scale, int digits) {
+    return s.settled.measured ? cell(value, fixed(scale * value, digits)) : cell(nullptr, "-");
+  };
+  for (const PilePoint& p : points) {
+    const PileSide &a = p.tabletop, &b = p.bullet;
+    t.rows.push_back({cell(p.bodies, std::to_string(p.bodies)), cell(a.costMsPerSecond, 1),
+                      cell(b.costMsPerSecond, 1), cell(a.costMsPerSecond / b.costMsPerSecond, 2),
+                      settled(a, a.settled.drift, 1e3, 3), settled(b, b.settled.drift, 1e3, 3),
+                      settled(a, a.settled.penetration, 1e3, 3), settled(b, b.settled.penetration, 1e3, 3),
+                      settled(a, a.settled.energyGain, 1.0, 4), settled(b, b.settled.energyGain, 1.0, 4),
+                      cell(a.simulated, 3), cell(a.note)});
+  }
+  t.notes.push_back("growth exponent k of cost ~ bodies^k (least squares over the sizes):");
+  for (const auto& [engine, k] : pileExponents(points)) t.notes.push_back("  " + padded(engine, 26) + fixed(k, 2));
   return t;
 }
 

@@ -6,6 +6,7 @@
 #include "io/ResultTable.h"
 #include "measure/BenchRuns.h"
 #include "measure/Benchmark.h"
+#include "measure/PileRun.h"
 
 namespace tabletop {
 
@@ -22,6 +23,10 @@ ResultTable switchTable(const std::vector<SwitchPoint>& points);
 
 /// The cube field's sizes and switches, with the growth exponents as notes.
 ResultTable scaleTable(const std::vector<ScalePoint>& points);
+
+/// The piles of each size, tabletop against Bullet, with the growth
+/// exponents as notes.
+ResultTable pileTable(const std::vector<PilePoint>& points);
 
 /// The hard cases, each run once.
 ResultTable hardTable(const std::vector<HardPoint>& points);

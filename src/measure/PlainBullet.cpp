@@ -32,10 +32,23 @@ btRigidBody::btRigidBodyConstructionInfo staticInfo(btCollisionShape* shape, con
   return info;
 }
 
-// One run; the worst drift is watched when `worstDrift` is given (the
-// timed runs leave it out).
+// The deepest contact among the world's manifolds, m (0 if none).
+double deepestContact(btCollisionDispatcher& dispatcher) {
+  double deepest = 0.0;
+  for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
+    const btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
+    for (int k = 0; k < manifold->getNumContacts(); ++k) {
+      deepest = std::max(deepest, -static_cast<double>(manifold->getContactPoint(k).getDistance()));
+    }
+  }
+  return deepest;
+}
+
+// One run; the worst drift (and the settled window, with `settled`) is
+// watched when `worstDrift` is given (the timed runs leave it out).
 double oneRun(const Scenario& scenario, World& start, const std::vector<Kick>& kicks, double timestep,
-              double duration, std::vector<Vec3>& centres, double* worstDrift = nullptr) {
+              double duration, std::vector<Vec3>& centres, double* worstDrift = nullptr,
+              SettledWatch* settled = nullptr) {
   btDefaultCollisionConfiguration configuration;
   btCollisionDispatcher dispatcher(&configuration);
   btDbvtBroadphase broadphase;
@@ -93,6 +106,10 @@ double oneRun(const Scenario& scenario, World& start, const std::vector<Kick>& k
     }
     world.stepSimulation(timestep, 0, timestep);
     if (worstDrift == nullptr) continue;
+    if (settled != nullptr) {
+      settled->observe((s + 1) * timestep, std::vector<const btRigidBody*>(entities.begin(), entities.end()),
+                       deepestContact(dispatcher));
+    }
     for (std::size_t i = 0; i < entities.size(); ++i) {
       const btVector3 moved =
           entities[i]->getWorldTransform().getOrigin() - start.entities()[i]->body()->getWorldTransform().getOrigin();
@@ -111,7 +128,8 @@ double oneRun(const Scenario& scenario, World& start, const std::vector<Kick>& k
 
 }  // namespace
 
-PlainRun runPlainBullet(const Scenario& scenario, double timestep, double duration, int repeats) {
+PlainRun runPlainBullet(const Scenario& scenario, double timestep, double duration, int repeats,
+                        double settledFrom) {
   // tabletop's World places the entities (seated on what they stand on)
   // and turns each push into its impulse; its own steps are not taken.
   Settings settings = scenario.settings;
@@ -133,7 +151,10 @@ PlainRun runPlainBullet(const Scenario& scenario, double timestep, double durati
   std::stable_sort(kicks.begin(), kicks.end(), [](const Kick& a, const Kick& b) { return a.at < b.at; });
   PlainRun run;
   run.simulated = duration;
-  oneRun(scenario, *start, kicks, timestep, duration, run.centres, &run.worstDrift);  // warm-up
+  SettledWatch watch(settledFrom, duration, scenario.settings.gravity);
+  oneRun(scenario, *start, kicks, timestep, duration, run.centres, &run.worstDrift,
+         settledFrom >= 0 ? &watch : nullptr);  // warm-up
+  run.settled = watch.result();
   std::vector<double> walls;
   for (int r = 0; r < std::max(1, repeats); ++r) {
     walls.push_back(oneRun(scenario, *start, kicks, timestep, duration, run.centres));

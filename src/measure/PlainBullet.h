@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "core/Vec3.h"
+#include "measure/SettledWatch.h"
 #include "scenario/Scenario.h"
 
 namespace tabletop {
@@ -24,10 +25,13 @@ struct PlainRun {
   /// m: the farthest any entity's centre got from its start, watched
   /// after every step of the untimed warm-up run.
   double worstDrift = 0;
+  Settled settled;  ///< the window asked for, watched in the warm-up run
 };
 
 /// Runs `scenario` for `duration` s at `timestep`, `repeats` times after a
-/// warm-up.
-PlainRun runPlainBullet(const Scenario& scenario, double timestep, double duration, int repeats);
+/// warm-up; the warm-up watches the settled window [settledFrom,
+/// duration] s when settledFrom >= 0.
+PlainRun runPlainBullet(const Scenario& scenario, double timestep, double duration, int repeats,
+                        double settledFrom = -1.0);
 
 }  // namespace tabletop

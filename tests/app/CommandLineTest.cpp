@@ -399,6 +399,42 @@ TEST(CommandLine, BenchMeasuresTheModelSwitchesAndTheScale) {
   EXPECT_EQ(o.status, 2);
 }
 
+// --piles is a section of its own: each tiny pile runs its 2.5 s in
+// tabletop and in Bullet, every column printed, the settled window
+// measured for both, and a growth exponent for each engine.
+TEST(CommandLine, BenchDropsPilesAgainstBullet) {
+  Outcome o = run(kBin + "tabletop bench --piles 4,8 --json");
+  ASSERT_EQ(o.status, 0) << o.err;
+  const auto j = nlohmann::json::parse(o.out);
+  EXPECT_TRUE(j["sweep"].empty());
+  ASSERT_EQ(j["piles"].size(), 2u);
+  for (const char* key : {"bodies", "tabletop_ms_per_s", "bullet_ms_per_s", "ratio", "tabletop_drift_m",
+                          "bullet_drift_m", "tabletop_penetration_m", "bullet_penetration_m",
+                          "tabletop_energy_gain_j", "bullet_energy_gain_j", "simulated_s", "note"}) {
+    EXPECT_TRUE(j["piles"][1].contains(key)) << key;
+  }
+  EXPECT_EQ(j["piles"][1]["bodies"], 8);
+  EXPECT_DOUBLE_EQ(j["piles"][1]["simulated_s"].get<double>(), 2.5);
+  EXPECT_TRUE(j["piles"][1]["tabletop_drift_m"].is_number());
+  EXPECT_TRUE(j["piles"][1]["bullet_drift_m"].is_number());
+  EXPECT_TRUE(j["pile_exponents"].contains("tabletop"));
+  EXPECT_TRUE(j["pile_exponents"].contains("bullet"));
+  o = run(kBin + "tabletop bench --piles 4,8");
+  ASSERT_EQ(o.status, 0) << o.err;
+  for (const char* column : {"bodies", "tabletop [ms/s]", "Bullet [ms/s]", "ratio", "drift [mm]", "Bullet drift [mm]",
+                             "deepest [mm]", "Bullet deepest [mm]", "gain [J]", "Bullet gain [J]", "simulated [s]",
+                             "growth exponent"}) {
+    EXPECT_NE(o.out.find(column), std::string::npos) << column << "\n" << o.out;
+  }
+  // A budget of a millisecond stops the first pile's tabletop run early
+  // and leaves the second out, saying so.
+  o = run(kBin + "tabletop bench --piles 4,8 --pile-budget 0.001");
+  ASSERT_EQ(o.status, 0) << o.err;
+  EXPECT_NE(o.out.find("stopped at the 0.001 s budget"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("(left out after a pile stopped at the budget: 8 bodies)"), std::string::npos) << o.out;
+  EXPECT_EQ(run(kBin + "tabletop bench --piles 0").status, 2);
+}
+
 // Every mode prints the same JSON keys for each entity.
 TEST(CommandLine, EveryModeRunsWithTheSameOutputFormat) {
   std::vector<std::string> keys;
