@@ -1,5 +1,6 @@
 # tabletop_test(NAME SOURCES ... [LIBS ...] [LABELS ...]): one GoogleTest
-# executable whose cases CTest discovers one by one.
+# executable whose cases CTest discovers one by one; then
+# tabletop_check_test_names(): a test of all their names.
 find_package(GTest REQUIRED)
 include(GoogleTest)
 
@@ -36,4 +37,19 @@ function(tabletop_test name)
     PROPERTIES LABELS "${_labels}" ENVIRONMENT "MESA_SHADER_CACHE_DISABLE=true"
     ENVIRONMENT_MODIFICATION "LP_NUM_THREADS=set:0"
     DISCOVERY_TIMEOUT 60)
+  # For the check of the suite's names (tabletop_check_test_names).
+  set_property(DIRECTORY APPEND PROPERTY TABLETOP_GTEST_EXECUTABLES $<TARGET_FILE:${name}>)
+endfunction()
+
+# Suite.NamesAreReadableUniqueAndStable: every CTest name in the build can
+# be fed back to `ctest -R`, and each executable of tabletop_test names
+# its tests the same way twice (cmake/CheckTestNames.cmake). Called once,
+# after the last tabletop_test of the directory.
+function(tabletop_check_test_names)
+  get_property(executables DIRECTORY PROPERTY TABLETOP_GTEST_EXECUTABLES)
+  add_test(NAME Suite.NamesAreReadableUniqueAndStable
+    COMMAND ${CMAKE_COMMAND} -DCTEST_COMMAND=${CMAKE_CTEST_COMMAND} -DBINARY_DIR=${PROJECT_BINARY_DIR}
+      -P ${PROJECT_SOURCE_DIR}/cmake/CheckTestNames.cmake ${executables})
+  set_tests_properties(Suite.NamesAreReadableUniqueAndStable PROPERTIES LABELS unit TIMEOUT 300
+    ENVIRONMENT "MESA_SHADER_CACHE_DISABLE=true")
 endfunction()
