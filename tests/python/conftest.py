@@ -15,8 +15,30 @@ import pytest
 
 OPT_OUT = "TABLETOP_PYTEST_WITHOUT_CTEST"
 
+# The tests that take longest, by their cost under CTest (pytest
+# --durations), marked slow: tests/CMakeLists.txt runs them as entries of
+# their own, labelled slow. `bench --hard`'s table of docs/hard-cases.md,
+# the pyramid of 55 cubes for 60 s (run by the command line and by the
+# module) and `bench --scale`'s table of docs/bench.md.
+SLOW = {
+    "test_samples.py::test_a_measured_table_is_what_bench_measures[hard]",
+    "test_module.py::test_run_matches_the_command_line[pyramid_55]",
+    "test_samples.py::test_a_measured_table_is_what_bench_measures[scale]",
+}
+
+
+@pytest.hookimpl(tryfirst=True)
+def pytest_collection_modifyitems(config, items):
+    """Marks the SLOW tests, before -m selects by marks."""
+    for item in items:
+        if f"{item.path.name}::{item.name}" in SLOW:
+            item.add_marker(pytest.mark.slow)
+
+
 def pytest_configure(config):
-    """Fails the run when CTest's environment is missing, unless OPT_OUT is set."""
+    """Registers the marks; fails the run when CTest's environment is missing, unless OPT_OUT is set."""
+    config.addinivalue_line("markers", "docs: checks a page of the docs against what the program prints or measures")
+    config.addinivalue_line("markers", "slow: among the costliest tests (SLOW), run by CTest as entries of their own")
     if os.environ.get(OPT_OUT):
         return
     missing = [f"{name} ({what})" for name, what in [
