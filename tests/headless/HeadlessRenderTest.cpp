@@ -17,6 +17,7 @@
 #include "sim/SceneBuilder.h"
 #include "sim/ScriptPlayer.h"
 #include "support/ColourProbe.h"
+#include "support/TestName.h"
 
 namespace tabletop {
 namespace {
@@ -151,7 +152,8 @@ TEST_P(ReportExampleFrames, ShowDroppedEntitiesBelowTheTableTopLine) {
   EXPECT_GT(dropped, 0) << "every report example drops an entity";
 }
 
-INSTANTIATE_TEST_SUITE_P(HeadlessRender, ReportExampleFrames, ::testing::ValuesIn(kExamples));
+INSTANTIATE_TEST_SUITE_P(HeadlessRender, ReportExampleFrames, ::testing::ValuesIn(kExamples),
+                         [](const ::testing::TestParamInfo<const char*>& info) { return test::testName({info.param}); });
 
 // The arrow (Push Direction On) is on the side of the face it pushes: for a
 // push on the Left face, left of the entity, at its height; Off, it is gone.

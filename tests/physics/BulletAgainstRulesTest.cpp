@@ -13,6 +13,7 @@
 #include "physics/shapes/Sphere.h"
 #include "rules/ReportRules.h"
 #include "support/PhysicsFixture.h"
+#include "support/TestName.h"
 
 namespace tabletop::test {
 namespace {
@@ -92,7 +93,12 @@ TEST_P(EdgeTipping, AtRestACubeTipsOffOnlyOnceItsCentrePassesTheEdge) {
   EXPECT_EQ(c.status() == EntityPositionStatus::FinishDropSimulation, beyond > 0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Within1mm, EdgeTipping, ::testing::Values(-1e-3, 1e-3));
+// edge_m1mm: the centre 1 mm inside the edge, edge_1mm 1 mm past it.
+std::string pastTheEdge(const ::testing::TestParamInfo<double>& info) {
+  return test::testName({"edge", test::number(info.param * 1e3) + "mm"});
+}
+
+INSTANTIATE_TEST_SUITE_P(Within1mm, EdgeTipping, ::testing::Values(-1e-3, 1e-3), pastTheEdge);
 
 class SlidingTipping : public EdgeTipping {};
 
@@ -108,7 +114,7 @@ TEST_P(SlidingTipping, ASlidingCubeTipsBeforeItsCentrePassesTheEdge) {
   EXPECT_EQ(c.status() == EntityPositionStatus::FinishDropSimulation, !stays);
 }
 
-INSTANTIATE_TEST_SUITE_P(Pinned, SlidingTipping, ::testing::Values(-0.010, -0.001));
+INSTANTIATE_TEST_SUITE_P(Pinned, SlidingTipping, ::testing::Values(-0.010, -0.001), pastTheEdge);
 
 // Report 3.7: a small sphere rolled head-on into a bigger, heavier one;
 // after the contact the struck sphere travels at least as far as the

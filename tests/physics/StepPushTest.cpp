@@ -3,6 +3,7 @@
 
 #include "physics/StepPush.h"
 
+#include <cmath>
 #include <stdexcept>
 
 #include <gtest/gtest.h>
@@ -11,6 +12,7 @@
 #include "physics/shapes/Seating.h"
 #include "physics/shapes/Sphere.h"
 #include "support/PhysicsFixture.h"
+#include "support/TestName.h"
 
 namespace tabletop {
 namespace {
@@ -98,7 +100,13 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(StepCase{false, 1.0 / 240, 0.2, 0.0}, StepCase{false, 1.0 / 240, 0.35, 90.0},
                       StepCase{false, 1.0 / 240, 0.1, 200.0}, StepCase{false, 1.0 / 60, 0.2, 270.0},
                       StepCase{true, 1.0 / 240, 0.2, 0.0}, StepCase{true, 1.0 / 240, 0.3, 135.0},
-                      StepCase{true, 1.0 / 60, 0.2, 180.0}, StepCase{true, 1.0 / 1000, 0.1, 45.0}));
+                      StepCase{true, 1.0 / 60, 0.2, 180.0}, StepCase{true, 1.0 / 1000, 0.1, 45.0}),
+    // cube_step0p35_angle90_240Hz
+    [](const ::testing::TestParamInfo<StepCase>& info) {
+      const StepCase& c = info.param;
+      return test::testName({c.sphere ? "sphere" : "cube", "step" + test::number(c.step),
+                             "angle" + test::number(c.angle), test::number(std::round(1.0 / c.timestep)) + "Hz"});
+    });
 
 }  // namespace
 }  // namespace tabletop

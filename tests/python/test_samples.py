@@ -5,6 +5,8 @@ import pytest
 
 from conftest import SOURCE
 
+pytestmark = pytest.mark.docs
+
 spec = importlib.util.spec_from_file_location("make_samples", SOURCE / "docs" / "make-samples.py")
 make_samples = importlib.util.module_from_spec(spec)
 spec.loader.exec_module(make_samples)

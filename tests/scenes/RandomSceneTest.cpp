@@ -16,6 +16,7 @@
 #include "physics/World.h"
 #include "sim/SceneBuilder.h"
 #include "measure/StabilityProbe.h"
+#include "support/TestName.h"
 
 namespace tabletop {
 namespace {
@@ -140,7 +141,10 @@ TEST_P(RandomRuns, StayFiniteInTheWorldAndGainNoEnergyAt60Hz) {
   EXPECT_TRUE(failures.empty()) << failures.size() << " of " << kRunsPerShard << " runs failed:" << listed(failures);
 }
 
-INSTANTIATE_TEST_SUITE_P(TenThousand, RandomRuns, testing::Range(0, kShards));
+INSTANTIATE_TEST_SUITE_P(TenThousand, RandomRuns, testing::Range(0, kShards),
+                         [](const testing::TestParamInfo<int>& info) {
+                           return test::testName({"shard", std::to_string(info.param)});
+                         });
 
 }  // namespace
 }  // namespace tabletop

@@ -16,6 +16,7 @@
 #include "scenario/ScenarioLoader.h"
 #include "sim/ModeComparison.h"
 #include "support/RunScene.h"
+#include "support/TestName.h"
 
 namespace tabletop {
 namespace {
@@ -51,7 +52,11 @@ TEST_P(ScenarioFiles, CompatAgreesWithTheRules) {
 INSTANTIATE_TEST_SUITE_P(Project, ScenarioFiles,
                          ::testing::Values("example1_single_cube.json", "example2_two_cubes.json",
                                            "example3_stacked_cubes.json", "example4_two_spheres.json",
-                                           "misaligned_cubes.json", "sphere_bounces_back.json"));
+                                           "misaligned_cubes.json", "sphere_bounces_back.json"),
+                         [](const ::testing::TestParamInfo<const char*>& info) {
+                           const std::string file = info.param;
+                           return test::testName({file.substr(0, file.rfind(".json"))});
+                         });
 
 // Random scenes: two or three cubes, or two or three spheres, of random
 // sizes at random places on the table, pushed one to three times along one

@@ -34,6 +34,7 @@
 #include "physics/World.h"
 #include "scenario/ScenarioLoader.h"
 #include "sim/SceneBuilder.h"
+#include "support/TestName.h"
 
 namespace tabletop {
 namespace {
@@ -104,7 +105,15 @@ std::vector<EdgeRun> runs() {
   return all;
 }
 
-INSTANTIATE_TEST_SUITE_P(ShapesEdgesSpeedsRates, EdgeSymmetry, testing::ValuesIn(runs()));
+// cube_0p1_Left_1p6Ns_30Hz: the shape's values without their keys.
+std::string name(const testing::TestParamInfo<EdgeRun>& info) {
+  const EdgeRun& c = info.param;
+  std::string shape = c.shape;
+  for (const std::string key : {R"("shape":)", R"("size":)"}) shape.erase(shape.find(key), key.size());
+  return test::testName({shape, c.direction, test::number(c.impulse) + "Ns", test::number(c.rate) + "Hz"});
+}
+
+INSTANTIATE_TEST_SUITE_P(ShapesEdgesSpeedsRates, EdgeSymmetry, testing::ValuesIn(runs()), name);
 
 }  // namespace
 }  // namespace tabletop

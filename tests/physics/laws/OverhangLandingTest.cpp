@@ -25,6 +25,7 @@
 #include "core/ShapeGeometry.h"
 #include "scenario/ScenarioLoader.h"
 #include "support/DeepestOverlap.h"
+#include "support/TestName.h"
 
 namespace tabletop {
 namespace {
@@ -117,7 +118,14 @@ std::vector<Landing> cases() {
   return all;
 }
 
-INSTANTIATE_TEST_SUITE_P(CylindersAndConesOverABoxEdge, OverhangLanding, testing::ValuesIn(cases()));
+// cylinder_0p04_0p04_0p08_reach0p3_spin_0_0_m10_30Hz
+std::string name(const testing::TestParamInfo<Landing>& info) {
+  const Landing& c = info.param;
+  return test::testName({"cylinder", test::numbers({c.size[0], c.size[1], c.size[2]}), "reach" + test::number(c.reach),
+                         "spin", test::numbers({c.spin[0], c.spin[1], c.spin[2]}), test::number(c.rate) + "Hz"});
+}
+
+INSTANTIATE_TEST_SUITE_P(CylindersAndConesOverABoxEdge, OverhangLanding, testing::ValuesIn(cases()), name);
 
 }  // namespace
 }  // namespace tabletop

@@ -27,6 +27,7 @@
 #include "core/Simulation.h"
 #include "scenes/LawScenes.h"
 #include "sim/SceneBuilder.h"
+#include "support/TestName.h"
 
 namespace tabletop {
 namespace {
@@ -89,14 +90,13 @@ std::vector<DropCase> cases() {
   return all;
 }
 
-INSTANTIATE_TEST_SUITE_P(ShapeSupportRate, Restitution, testing::ValuesIn(cases()),
-                         [](const testing::TestParamInfo<DropCase>& param) {
-                           std::string name = describe(param.param);
-                           for (char& ch : name) {
-                             if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-                           }
-                           return name;
-                         });
+// sphere_0p05_table_e0p5_60Hz
+std::string name(const testing::TestParamInfo<DropCase>& info) {
+  const DropCase& c = info.param;
+  return test::testName({c.shape, c.size, c.support, "e" + test::number(c.restitution), test::number(c.rate) + "Hz"});
+}
+
+INSTANTIATE_TEST_SUITE_P(ShapeSupportRate, Restitution, testing::ValuesIn(cases()), name);
 
 }  // namespace
 }  // namespace tabletop

@@ -25,6 +25,7 @@
 #include "core/ShapeGeometry.h"
 #include "scenario/ScenarioLoader.h"
 #include "support/DeepestOverlap.h"
+#include "support/TestName.h"
 
 namespace tabletop {
 namespace {
@@ -98,7 +99,14 @@ std::vector<Drop> cases() {
   return all;
 }
 
-INSTANTIATE_TEST_SUITE_P(RidersDroppedWithTheirBase, StackLanding, testing::ValuesIn(cases()));
+// box_0p08_0p03_0p06_floor_drop5mm_240Hz
+std::string name(const testing::TestParamInfo<Drop>& info) {
+  const Drop& c = info.param;
+  return test::testName({c.shape, c.size, c.floor ? "floor" : "table", "drop" + test::number(c.drop * 1e3) + "mm",
+                         test::number(c.rate) + "Hz"});
+}
+
+INSTANTIATE_TEST_SUITE_P(RidersDroppedWithTheirBase, StackLanding, testing::ValuesIn(cases()), name);
 
 }  // namespace
 }  // namespace tabletop

@@ -30,6 +30,7 @@
 #include "physics/World.h"
 #include "scenario/ScenarioLoader.h"
 #include "sim/SceneBuilder.h"
+#include "support/TestName.h"
 
 namespace tabletop {
 namespace {
@@ -149,7 +150,15 @@ std::vector<Topple> cases() {
   return all;
 }
 
-INSTANTIATE_TEST_SUITE_P(BoxesAndCylindersOnTableAndFloor, Toppling, testing::ValuesIn(cases()));
+// box_0p05_0p2_0p05_spin_0_0_14_table_60Hz
+std::string name(const testing::TestParamInfo<Topple>& info) {
+  const Topple& c = info.param;
+  return test::testName({c.shape, test::numbers({c.size[0], c.size[1], c.size[2]}), "spin",
+                         test::numbers({c.spin[0], c.spin[1], c.spin[2]}), c.onTable ? "table" : "floor",
+                         test::number(c.rate) + "Hz"});
+}
+
+INSTANTIATE_TEST_SUITE_P(BoxesAndCylindersOnTableAndFloor, Toppling, testing::ValuesIn(cases()), name);
 
 }  // namespace
 }  // namespace tabletop
