@@ -153,7 +153,7 @@ TEST_P(ReportExampleFrames, ShowDroppedEntitiesBelowTheTableTopLine) {
 }
 
 INSTANTIATE_TEST_SUITE_P(HeadlessRender, ReportExampleFrames, ::testing::ValuesIn(kExamples),
-                         [](const ::testing::TestParamInfo<const char*>& info) { return test::testName({info.param}); });
+                         [](const ::testing::TestParamInfo<const char*>& p) { return test::testName({p.param}); });
 
 // The arrow (Push Direction On) is on the side of the face it pushes: for a
 // push on the Left face, left of the entity, at its height; Off, it is gone.

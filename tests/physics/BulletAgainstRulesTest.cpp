@@ -94,8 +94,8 @@ TEST_P(EdgeTipping, AtRestACubeTipsOffOnlyOnceItsCentrePassesTheEdge) {
 }
 
 // edge_m1mm: the centre 1 mm inside the edge, edge_1mm 1 mm past it.
-std::string pastTheEdge(const ::testing::TestParamInfo<double>& info) {
-  return test::testName({"edge", test::number(info.param * 1e3) + "mm"});
+std::string pastTheEdge(const ::testing::TestParamInfo<double>& p) {
+  return test::testName({"edge", test::number(p.param * 1e3) + "mm"});
 }
 
 INSTANTIATE_TEST_SUITE_P(Within1mm, EdgeTipping, ::testing::Values(-1e-3, 1e-3), pastTheEdge);

@@ -102,8 +102,8 @@ INSTANTIATE_TEST_SUITE_P(
                       StepCase{true, 1.0 / 240, 0.2, 0.0}, StepCase{true, 1.0 / 240, 0.3, 135.0},
                       StepCase{true, 1.0 / 60, 0.2, 180.0}, StepCase{true, 1.0 / 1000, 0.1, 45.0}),
     // cube_step0p35_angle90_240Hz
-    [](const ::testing::TestParamInfo<StepCase>& info) {
-      const StepCase& c = info.param;
+    [](const ::testing::TestParamInfo<StepCase>& p) {
+      const StepCase& c = p.param;
       return test::testName({c.sphere ? "sphere" : "cube", "step" + test::number(c.step),
                              "angle" + test::number(c.angle), test::number(std::round(1.0 / c.timestep)) + "Hz"});
     });

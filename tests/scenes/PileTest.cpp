@@ -55,11 +55,17 @@ TEST(Pile, HasTheCountAndMixAsked) {
       heaviest = std::max(heaviest, e.mass);
       for (double size : e.geometry.sizes()) EXPECT_LE(size, Pile::kLargest + 1e-12) << e.name;
       EXPECT_LE(bound(e.geometry), 0.5 * std::sqrt(3.0) * Pile::kLargest + 1e-12) << e.name;
-      if (e.geometry.kind() == ShapeKind::Cylinder) EXPECT_EQ(e.geometry.sizes()[0], e.geometry.sizes()[1]);
+      if (e.geometry.kind() == ShapeKind::Cylinder) {
+        EXPECT_EQ(e.geometry.sizes()[0], e.geometry.sizes()[1]);
+      }
     }
     for (const auto& [kind, count] : kinds) EXPECT_LE(std::abs(count - n / 4), 1) << n;
-    if (n >= 4) EXPECT_EQ(kinds.size(), 4u) << n;
-    if (n >= 100) EXPECT_GT(heaviest / lightest, 5.0) << n;
+    if (n >= 4) {
+      EXPECT_EQ(kinds.size(), 4u) << n;
+    }
+    if (n >= 100) {
+      EXPECT_GT(heaviest / lightest, 5.0) << n;
+    }
   }
 }
 

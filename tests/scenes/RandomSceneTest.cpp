@@ -142,8 +142,8 @@ TEST_P(RandomRuns, StayFiniteInTheWorldAndGainNoEnergyAt60Hz) {
 }
 
 INSTANTIATE_TEST_SUITE_P(TenThousand, RandomRuns, testing::Range(0, kShards),
-                         [](const testing::TestParamInfo<int>& info) {
-                           return test::testName({"shard", std::to_string(info.param)});
+                         [](const testing::TestParamInfo<int>& p) {
+                           return test::testName({"shard", std::to_string(p.param)});
                          });
 
 }  // namespace

@@ -53,8 +53,8 @@ INSTANTIATE_TEST_SUITE_P(Project, ScenarioFiles,
                          ::testing::Values("example1_single_cube.json", "example2_two_cubes.json",
                                            "example3_stacked_cubes.json", "example4_two_spheres.json",
                                            "misaligned_cubes.json", "sphere_bounces_back.json"),
-                         [](const ::testing::TestParamInfo<const char*>& info) {
-                           const std::string file = info.param;
+                         [](const ::testing::TestParamInfo<const char*>& p) {
+                           const std::string file = p.param;
                            return test::testName({file.substr(0, file.rfind(".json"))});
                          });
 

@@ -106,8 +106,8 @@ std::vector<EdgeRun> runs() {
 }
 
 // cube_0p1_Left_1p6Ns_30Hz: the shape's values without their keys.
-std::string name(const testing::TestParamInfo<EdgeRun>& info) {
-  const EdgeRun& c = info.param;
+std::string name(const testing::TestParamInfo<EdgeRun>& p) {
+  const EdgeRun& c = p.param;
   std::string shape = c.shape;
   for (const std::string key : {R"("shape":)", R"("size":)"}) shape.erase(shape.find(key), key.size());
   return test::testName({shape, c.direction, test::number(c.impulse) + "Ns", test::number(c.rate) + "Hz"});

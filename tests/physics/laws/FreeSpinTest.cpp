@@ -114,9 +114,9 @@ std::vector<FreeSpinCase> cases() {
 }
 
 INSTANTIATE_TEST_SUITE_P(BodyRate, FreeSpin, testing::ValuesIn(cases()),
-                         [](const testing::TestParamInfo<FreeSpinCase>& param) {
-                           return std::string(param.param.name) + "_" +
-                                  std::to_string(static_cast<int>(param.param.rate)) + "_Hz";
+                         [](const testing::TestParamInfo<FreeSpinCase>& p) {
+                           return std::string(p.param.name) + "_" +
+                                  std::to_string(static_cast<int>(p.param.rate)) + "_Hz";
                          });
 
 }  // namespace

@@ -119,8 +119,8 @@ std::vector<Landing> cases() {
 }
 
 // cylinder_0p04_0p04_0p08_reach0p3_spin_0_0_m10_30Hz
-std::string name(const testing::TestParamInfo<Landing>& info) {
-  const Landing& c = info.param;
+std::string name(const testing::TestParamInfo<Landing>& p) {
+  const Landing& c = p.param;
   return test::testName({"cylinder", test::numbers({c.size[0], c.size[1], c.size[2]}), "reach" + test::number(c.reach),
                          "spin", test::numbers({c.spin[0], c.spin[1], c.spin[2]}), test::number(c.rate) + "Hz"});
 }

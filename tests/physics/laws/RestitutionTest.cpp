@@ -91,8 +91,8 @@ std::vector<DropCase> cases() {
 }
 
 // sphere_0p05_table_e0p5_60Hz
-std::string name(const testing::TestParamInfo<DropCase>& info) {
-  const DropCase& c = info.param;
+std::string name(const testing::TestParamInfo<DropCase>& p) {
+  const DropCase& c = p.param;
   return test::testName({c.shape, c.size, c.support, "e" + test::number(c.restitution), test::number(c.rate) + "Hz"});
 }
 

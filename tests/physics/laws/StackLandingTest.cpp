@@ -100,8 +100,8 @@ std::vector<Drop> cases() {
 }
 
 // box_0p08_0p03_0p06_floor_drop5mm_240Hz
-std::string name(const testing::TestParamInfo<Drop>& info) {
-  const Drop& c = info.param;
+std::string name(const testing::TestParamInfo<Drop>& p) {
+  const Drop& c = p.param;
   return test::testName({c.shape, c.size, c.floor ? "floor" : "table", "drop" + test::number(c.drop * 1e3) + "mm",
                          test::number(c.rate) + "Hz"});
 }

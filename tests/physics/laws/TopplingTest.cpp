@@ -151,8 +151,8 @@ std::vector<Topple> cases() {
 }
 
 // box_0p05_0p2_0p05_spin_0_0_14_table_60Hz
-std::string name(const testing::TestParamInfo<Topple>& info) {
-  const Topple& c = info.param;
+std::string name(const testing::TestParamInfo<Topple>& p) {
+  const Topple& c = p.param;
   return test::testName({c.shape, test::numbers({c.size[0], c.size[1], c.size[2]}), "spin",
                          test::numbers({c.spin[0], c.spin[1], c.spin[2]}), c.onTable ? "table" : "floor",
                          test::number(c.rate) + "Hz"});
