@@ -47,6 +47,11 @@ void initialise(const py::handle& self, const py::object& scene, const std::stri
     const py::gil_scoped_release nogil;
     built = std::make_unique<SteppedScene>(std::move(scenario), chosen, script);
   }
+  // Another thread may have initialised it while this one built without
+  // the GIL; the check and the setting below happen under the GIL.
+  if (holder.holder_constructed()) {
+    throw std::runtime_error("Simulation: already initialised; make a new Simulation for another scene");
+  }
   holder.value_ptr() = new SimulationObject(std::move(built));
   holder.type->init_instance(holder.inst, nullptr);  // the holder owns it from here, as py::init's would
 }

@@ -129,6 +129,33 @@ print(sim.steps, errors)
     assert child.stdout.split() == ["600", "[]"]
 
 
+def test_threads_initialising_one_object_at_once_leave_one_scene():
+    code = f"""
+import threading
+import tabletop
+raw = tabletop.Simulation.__new__(tabletop.Simulation)
+start = threading.Barrier(8)
+outcomes = []
+def init():
+    start.wait()
+    try:
+        raw.__init__({SCENE!r}, script=False)
+        outcomes.append("made")
+    except RuntimeError as e:
+        outcomes.append("refused" if "already initialised" in str(e) else repr(e))
+threads = [threading.Thread(target=init) for _ in range(8)]
+for t in threads:
+    t.start()
+for t in threads:
+    t.join()
+raw.step(3)
+print(sorted(outcomes), raw.steps, raw.names)
+"""
+    child = run_python(code, timeout=120)
+    assert child.returncode == 0, child.stderr
+    assert child.stdout.strip() == str(["made"] + ["refused"] * 7) + " 3 ['A', 'B']"
+
+
 def test_two_threads_rendering_first_do_not_deadlock():
     """Neither thread made an array before: NumPy's C API must already be looked up.
 
