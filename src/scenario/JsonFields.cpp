@@ -1,27 +1,8 @@
 #include "scenario/JsonFields.h"
 
-#include <sstream>
-
 #include "core/Text.h"
 
 namespace tabletop::fields {
-
-std::string number(double v) {
-  std::ostringstream o;
-  o << v;
-  return o.str();
-}
-
-std::string rangeText(const Range& r) {
-  if (r.lo == -kInf && r.hi == kInf) return "a finite number";
-  if (r.hi == kInf) return r.loOpen ? "a positive number" : "a non-negative number";
-  if (r.loOpen && r.lo == 0.0) return "a positive number up to " + number(r.hi);
-  return "a number from " + number(r.lo) + " to " + number(r.hi);
-}
-
-bool inRange(double v, const Range& r) {
-  return std::isfinite(v) && (r.loOpen ? v > r.lo : v >= r.lo) && v <= r.hi;
-}
 
 // A name as a message quotes it in prose, and as it echoes a value.
 std::string quotedName(const std::string& name) { return "'" + shownText(name, ScenarioLoader::kMaxQuotedBytes) + "'"; }

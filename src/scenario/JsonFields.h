@@ -13,6 +13,7 @@
 #include "scenario/JsonLocator.h"
 #include "scenario/ScenarioError.h"
 #include "scenario/ScenarioLoader.h"
+#include "scenario/ValueRanges.h"
 
 /// The checked reading of JSON objects that the scenario loader is made
 /// of: ranges of numbers, values shown short in messages, and a reader of
@@ -22,24 +23,14 @@ namespace tabletop::fields {
 
 using nlohmann::json;
 
-// The numbers a field accepts. Every quantity has bounds that keep Bullet
-// meaningful in double precision and a run finite in time: nothing smaller
-// than a millimetre or larger than a kilometre, no mass ratio beyond 1e9, no
-// more than kMaxSteps steps.
-struct Range {
-  double lo;
-  double hi;
-  bool loOpen;  ///< lo itself is refused (a positive quantity)
-};
+// The ranges of numbers and how messages word them (ValueRanges.h, shared
+// with the Python module's checks of its arguments).
+using ranges::inRange;
+using ranges::kInf;
+using ranges::number;
+using ranges::Range;
+using ranges::rangeText;
 
-inline constexpr double kInf = std::numeric_limits<double>::infinity();
-
-/// A number as messages write it (shortest form).
-std::string number(double v);
-/// "a positive number", "a number from 0 to 1", ...
-std::string rangeText(const Range& r);
-/// Finite and within the range.
-bool inRange(double v, const Range& r);
 /// A name as a message quotes it in prose ('A'), cut and escaped.
 std::string quotedName(const std::string& name);
 /// A text as a message echoes a value ("A"), cut and escaped.
@@ -82,11 +73,8 @@ class Fields {
 
   double checkNumber(const json& v, const std::string& path, const Range& range, double fallback) {
     if (!v.is_number() || !inRange(v.get<double>(), range)) {
-      // A sign error is named as such; a wrong magnitude gets the bounds.
-      const bool positive = range.lo > 0.0 || (range.lo == 0.0 && range.loOpen);
-      const bool signWrong = positive && v.is_number() && v.get<double>() <= 0.0;
-      fail(path, "expected " + (signWrong ? std::string("a positive number") : rangeText(range)) + ", got " +
-                     shown(v));
+      fail(path, "expected " + (v.is_number() ? ranges::expectedText(v.get<double>(), range) : rangeText(range)) +
+                     ", got " + shown(v));
       return fallback;
     }
     return v.get<double>();
@@ -176,13 +164,13 @@ void choice(Fields& f, const std::string& key, const Enum (&values)[N], Enum& in
   }
 }
 
-// An optional integer setting from `low` to `high`, into `value`.
-inline void integer(Fields& f, const char* key, int low, int high, int& value) {
+// An optional integer setting within `range`, into `value`.
+inline void integer(Fields& f, const char* key, const ranges::IntRange& range, int& value) {
   const json* it = f.get(key, false);
   if (!it) return;
-  if (!it->is_number_integer() || it->get<long long>() < low || it->get<long long>() > high) {
-    f.fail(f.at(key), "expected an integer from " + std::to_string(low) + " to " + std::to_string(high) + ", got " +
-                          shown(*it));
+  if (!it->is_number_integer() || it->get<long long>() < range.lo || it->get<long long>() > range.hi) {
+    f.fail(f.at(key), "expected an integer from " + std::to_string(range.lo) + " to " + std::to_string(range.hi) +
+                          ", got " + shown(*it));
   } else {
     value = it->get<int>();
   }

@@ -118,6 +118,10 @@ std::string ScenarioLoader::runSizeProblem(const Settings& settings, std::size_t
   if (!(steps <= kMaxSteps)) {
     return "expected at most " + number(kMaxSteps) + " steps (duration / timestep), got " + number(steps);
   }
+  return workProblem(steps, settings, entities);
+}
+
+std::string ScenarioLoader::workProblem(double steps, const Settings& settings, std::size_t entities) {
   const double work = steps * settings.maxSubsteps * settings.iterations * static_cast<double>(entities);
   if (!(work <= kMaxWork)) {
     return "expected at most " + number(kMaxWork) + " solver work (steps x max_substeps x iterations x entities), got " +

@@ -39,6 +39,10 @@ class ScenarioLoader {
   /// work for `entities` bodies; else what is wrong (the command line's
   /// overrides are checked with it too).
   static std::string runSizeProblem(const Settings& settings, std::size_t entities);
+  /// Empty when `steps` steps of `settings` for `entities` bodies ask for
+  /// at most kMaxWork work; else what is wrong. runSizeProblem's second
+  /// half, and the bound on a stepping call from Python.
+  static std::string workProblem(double steps, const Settings& settings, std::size_t entities);
 };
 
 }  // namespace tabletop

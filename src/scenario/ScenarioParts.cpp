@@ -12,29 +12,9 @@
 namespace tabletop::parts {
 
 using namespace fields;
+using namespace ranges;
 
 namespace {
-
-// The numbers a field accepts. Every quantity has bounds that keep Bullet
-// meaningful in double precision and a run finite in time.
-constexpr Range kFinite{-kInf, kInf, false};
-constexpr Range kPositive{0.0, kInf, true};
-constexpr Range kNonNegative{0.0, kInf, false};
-constexpr Range kUnitInterval{0.0, 1.0, false};
-constexpr Range kLength{1e-3, 1e3, false};        ///< metres: sizes, the table
-constexpr Range kCoordinate{-1e4, 1e4, false};    ///< metres from the origin
-constexpr Range kMass{1e-4, 1e5, false};          ///< kg
-constexpr Range kAngle{-1e6, 1e6, false};         ///< degrees
-constexpr Range kFriction{0.0, 10.0, false};
-constexpr Range kTimestep{kMinTimestep, kMaxTimestep, false};  ///< seconds
-constexpr Range kTime{0.0, 3600.0, false};        ///< seconds
-constexpr Range kSpan{0.0, 3600.0, true};         ///< seconds, positive
-constexpr Range kGravity{0.0, 100.0, false};      ///< m/s^2
-constexpr Range kStep{0.0, 100.0, true};          ///< metres
-constexpr Range kImpulse{0.0, 1e6, true};         ///< N s
-constexpr Range kSpeedTolerance{0.0, 1.0, false};  ///< m/s
-constexpr Range kSpeed{-1e3, 1e3, false};         ///< m/s, one component
-constexpr Range kSpin{-1e4, 1e4, false};          ///< rad/s, one component
 
 Colour readColour(Fields& parent, const std::string& key, Colour c) {
   const json* v = parent.get(key, false);
@@ -111,8 +91,8 @@ Settings readSettings(const json& j, std::vector<Problem>& problems) {
   Settings s;
   Fields f(j, "/settings", problems);
   s.timestep = f.number("timestep", kTimestep, s.timestep);
-  integer(f, "iterations", 1, 10000, s.iterations);
-  integer(f, "max_substeps", 1, 1000, s.maxSubsteps);
+  integer(f, "iterations", kIterations, s.iterations);
+  integer(f, "max_substeps", kMaxSubsteps, s.maxSubsteps);
   choice(f, "solver", kAllContactSolvers, s.solver);
   s.duration = f.number("duration", kSpan, s.duration);
   s.gravity = f.number("gravity", kGravity, s.gravity);

@@ -95,3 +95,12 @@ def without_comments(text):
 
 def schema(name):
     return json.loads((SOURCE / "data" / "schema" / name).read_text())
+
+
+def run_python(code, timeout=120, **kwargs):
+    """`code` run by this interpreter in a child process (with this process's
+    environment, so the same module), for calls that could crash or hang it:
+    a regression then fails one test instead of ending the run."""
+    import subprocess
+    import sys
+    return subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=timeout, **kwargs)

@@ -124,7 +124,7 @@ def test_errors_carry_the_command_lines_located_message(tmp_path, tabletop_bin):
         tabletop.scene(cube_scene(size=-1))
     with pytest.raises(ValueError, match="mode: expected bullet, compat or rules, got 'nope'"):
         tabletop.run(cube_scene(), mode="nope")
-    with pytest.raises(ValueError, match="either impulse"):
+    with pytest.raises(ValueError, match="exactly one of .step., .impulse."):
         tabletop.Simulation(cube_scene(), script=False).push("A")
 
 

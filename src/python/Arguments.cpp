@@ -1,0 +1,90 @@
+#include "python/Arguments.h"
+
+#include <string>
+
+#include "core/Integrator.h"
+#include "core/Text.h"
+#include "scenario/ScenarioError.h"
+#include "scenario/ScenarioLoader.h"
+
+namespace tabletop::python {
+
+double checkedNumber(const std::string& what, double value, const ranges::Range& range) {
+  if (!ranges::inRange(value, range)) {
+    throw py::value_error(what + ": expected " + ranges::expectedText(value, range) + ", got " +
+                          ranges::number(value));
+  }
+  return value;
+}
+
+long long checkedInteger(const std::string& what, const py::handle& value, long long lo, long long hi) {
+  const std::string expected = "expected an integer from " + std::to_string(lo) + " to " + std::to_string(hi);
+  // PyNumber_Index takes what Python's own range() takes, and refuses
+  // floats (1.5 steps is no number of steps).
+  const py::object index = py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr()));
+  if (!index) {
+    PyErr_Clear();
+    throw py::type_error(what + ": " + expected + ", got " + shownText(py::repr(value).cast<std::string>(), 40));
+  }
+  int overflow = 0;
+  const long long v = PyLong_AsLongLongAndOverflow(index.ptr(), &overflow);
+  if (overflow != 0 || v < lo || v > hi) {
+    throw py::value_error(what + ": " + expected + ", got " + shownText(py::str(index).cast<std::string>(), 40));
+  }
+  return v;
+}
+
+const std::string& checkedEntity(const std::string& what, const Scenario& scenario, const std::string& name) {
+  for (const EntitySpec& e : scenario.entities) {
+    if (e.name == name) return e.name;
+  }
+  throw py::value_error(what + ": expected the name of an entity, got \"" + shownText(name, 40) + "\"");
+}
+
+SimulationMode modeNamed(const std::string& name) {
+  const auto mode = simulationModeFromString(name);
+  if (!mode) throw py::value_error("mode: expected bullet, compat or rules, got '" + shownText(name, 40) + "'");
+  return *mode;
+}
+
+Scenario resolved(Scenario scenario, const Overrides& o) {
+  Settings& s = scenario.settings;
+  if (o.timestep) s.timestep = checkedNumber("timestep", *o.timestep, ranges::kTimestep);
+  if (!o.iterations.is_none()) {
+    s.iterations = static_cast<int>(
+        checkedInteger("iterations", o.iterations, ranges::kIterations.lo, ranges::kIterations.hi));
+  }
+  if (o.integrator) {
+    const auto integrator = integratorFromString(*o.integrator);
+    if (!integrator) {
+      throw py::value_error("integrator: expected trapezoid or euler, got '" + shownText(*o.integrator, 40) + "'");
+    }
+    s.integrator = *integrator;
+  }
+  if (o.duration) s.duration = checkedNumber("duration", *o.duration, ranges::kSpan);
+  if (const std::string problem = ScenarioLoader::runSizeProblem(s, scenario.entities.size()); !problem.empty()) {
+    throw ScenarioError(scenario, {{"/settings", problem + " with the settings given from Python"}});
+  }
+  return scenario;
+}
+
+Scenario loadPath(const std::string& path) {
+  if (path.find('\0') != std::string::npos) {
+    throw py::value_error("path: expected a file's path, got one holding a NUL character");
+  }
+  return ScenarioLoader::loadFile(path);
+}
+
+// A scene built from Python objects: the same format as a file, checked by
+// the same loader, its problems located in the text it was written to.
+Scenario scenarioOf(const py::object& scene) {
+  if (py::isinstance<Scenario>(scene)) return scene.cast<Scenario>();
+  if (py::isinstance<py::str>(scene)) return loadPath(scene.cast<std::string>());
+  if (py::hasattr(scene, "__fspath__")) return loadPath(py::str(scene.attr("__fspath__")()).cast<std::string>());
+  const std::string text = py::module_::import("json").attr("dumps")(scene, py::arg("indent") = 1).cast<std::string>();
+  return ScenarioLoader::loadText(text, "<scene>");
+}
+
+py::object fromJson(const nlohmann::json& value) { return py::module_::import("json").attr("loads")(value.dump()); }
+
+}  // namespace tabletop::python

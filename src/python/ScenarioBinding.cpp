@@ -1,0 +1,92 @@
+// tabletop.Scenario, load, scene and run, and the exceptions every part of
+// the module raises: a scenario refused (with the command line's located
+// lines), a run that diverged, and a Python error already set (Ctrl-C).
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <pybind11/stl.h>
+
+#include "python/Arguments.h"
+#include "python/Bindings.h"
+#include "python/SignalCheck.h"
+#include "scenario/ScenarioError.h"
+#include "sim/DivergenceGuard.h"
+#include "sim/ResultFormat.h"
+#include "sim/SceneBuilder.h"
+#include "sim/ScriptRunner.h"
+
+namespace tabletop::python {
+namespace {
+
+std::string joinedLines(const ScenarioError& e) {
+  std::string text;
+  for (const std::string& line : e.lines()) text += (text.empty() ? "" : "\n") + line;
+  return text;
+}
+
+// run(): the whole run with the GIL released, Ctrl-C looked for between
+// steps; bounded by the duration, which resolved() bounded.
+py::object run(const py::object& scene, const std::string& mode, std::optional<double> timestep,
+               const py::object& iterations, std::optional<std::string> integrator, std::optional<double> duration) {
+  const Scenario scenario = resolved(scenarioOf(scene), {timestep, iterations, integrator, duration});
+  const SimulationMode chosen = modeNamed(mode);
+  RunResult result;
+  {
+    const py::gil_scoped_release nogil;
+    const std::unique_ptr<Simulation> simulation = buildSimulation(scenario, scenario.settings, chosen);
+    SignalCheck check;
+    result = runScript(scenario, scenario.settings, *simulation, [&check](const Simulation&) { check(); });
+  }
+  return fromJson(toJson(result));
+}
+
+}  // namespace
+
+std::vector<std::string> entityNames(const Scenario& scenario) {
+  std::vector<std::string> names;
+  for (const EntitySpec& e : scenario.entities) names.push_back(e.name);
+  return names;
+}
+
+void bindScenarios(py::module_& m) {
+  static py::exception<ScenarioError> scenarioError(m, "ScenarioError", PyExc_ValueError);
+  scenarioError.doc() =
+      "A scenario that cannot be run: one line per problem, FILE:LINE:COL: at /pointer: message, as the command "
+      "line prints it.";
+  static py::exception<DivergenceError> divergenceError(m, "DivergenceError", PyExc_RuntimeError);
+  divergenceError.doc() = "A run that left the bounds of its scene (a body too fast, or through the floor).";
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const ScenarioError& e) {
+      scenarioError(joinedLines(e).c_str());
+    } catch (const DivergenceError& e) {
+      divergenceError(e.what());
+    } catch (const PythonErrorSet&) {
+      // The error a signal handler raised (KeyboardInterrupt) is already set.
+    }
+  });
+
+  py::class_<Scenario>(m, "Scenario", "A scene and its script, as loaded and checked from a file or from objects.")
+      .def_readonly("name", &Scenario::name, "The scenario's name.")
+      .def_readonly("file", &Scenario::file, "Where it was read from ('<scene>' for one built from objects).")
+      .def_property_readonly("entities", &entityNames, "The entities' names, in the order every array gives them.");
+
+  m.def("load", &loadPath, py::arg("path"),
+        "Reads and checks a scenario file (JSON with comments; the format of scenarios/README.md). Raises "
+        "ScenarioError with every problem located.");
+  m.def(
+      "scene", [](const py::object& object) { return scenarioOf(object); }, py::arg("scene"),
+      "Builds a scenario from Python objects (dicts, lists, numbers, strings) in the scenario file's format, "
+      "checked as a file is; problems are located in that object written as JSON.");
+  m.def("run", &run, py::arg("scene"), py::kw_only(), py::arg("mode") = "bullet", py::arg("timestep") = py::none(),
+        py::arg("iterations") = py::none(), py::arg("integrator") = py::none(), py::arg("duration") = py::none(),
+        "Runs a scenario (a Scenario, a file's path, or a scene's objects) to its end and returns its run as "
+        "`tabletop run --json` prints it (one entry of the document's runs): entities, events, state_hash, "
+        "complete. A run that diverges returns complete False with its failure. The keyword settings override the "
+        "scenario's, as run's options do, within the same limits. The GIL is released while it runs; Ctrl-C stops "
+        "it.");
+}
+
+}  // namespace tabletop::python

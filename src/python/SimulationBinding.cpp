@@ -1,0 +1,235 @@
+// tabletop.Simulation: a scene stepped from Python. Every method checks its
+// arguments before anything changes (Arguments.h), runs on the object's
+// scene one thread at a time (SimulationObject), and steps and draws with
+// the GIL released, looking for Ctrl-C between steps (SignalCheck).
+#include <optional>
+#include <string>
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include "core/DirectionDef.h"
+#include "core/Settings.h"
+#include "core/Text.h"
+#include "python/Arguments.h"
+#include "python/Bindings.h"
+#include "python/SignalCheck.h"
+#include "python/SimulationObject.h"
+#include "scenario/ScenarioLoader.h"
+#include "sim/ResultFormat.h"
+
+namespace tabletop::python {
+namespace {
+
+constexpr int kMaxImageSide = 8192;  // render's --size allows each side 1..8192 pixels
+
+// `f(scene)` for one call on `self`, the scene locked for it.
+template <class F>
+auto with(const py::handle& self, F&& f) {
+  const SimulationObject::Use use = initialised(self).use();
+  return f(*use);
+}
+
+// Simulation(scene, ...): builds the scene and sets it into `self`. Written
+// as a plain method named __init__, not pybind11's py::init: pybind11
+// silently ignores a second __init__ on a live object, which would keep the
+// old scene where the caller asked for a new one; here it is refused.
+void initialise(const py::handle& self, const py::object& scene, const std::string& mode, bool script,
+                std::optional<double> timestep, const py::object& iterations, std::optional<std::string> integrator) {
+  py::detail::value_and_holder holder = valueAndHolder(self);
+  if (holder.holder_constructed()) {
+    throw std::runtime_error("Simulation: already initialised; make a new Simulation for another scene");
+  }
+  Scenario scenario = resolved(scenarioOf(scene), {timestep, iterations, integrator, std::nullopt});
+  const SimulationMode chosen = modeNamed(mode);
+  std::unique_ptr<SteppedScene> built;
+  {
+    const py::gil_scoped_release nogil;
+    built = std::make_unique<SteppedScene>(std::move(scenario), chosen, script);
+  }
+  // Another thread may have initialised it while this one built without
+  // the GIL; the check and the setting below happen under the GIL.
+  if (holder.holder_constructed()) {
+    throw std::runtime_error("Simulation: already initialised; make a new Simulation for another scene");
+  }
+  holder.value_ptr() = new SimulationObject(std::move(built));
+  holder.type->init_instance(holder.inst, nullptr);  // the holder owns it from here, as py::init's would
+}
+
+void step(const py::handle& self, const py::object& n) {
+  with(self, [&](SteppedScene& scene) {
+    const long long count = checkedInteger("step: n", n, 0, static_cast<long long>(kMaxSteps));
+    const std::string tooMuch = ScenarioLoader::workProblem(static_cast<double>(count), scene.scenario().settings,
+                                                            scene.scenario().entities.size());
+    if (!tooMuch.empty()) throw py::value_error("step: n: " + tooMuch);
+    SignalCheck check;
+    const py::gil_scoped_release nogil;
+    scene.step(count, std::ref(check));
+  });
+}
+
+void runToEnd(const py::handle& self) {
+  with(self, [](SteppedScene& scene) {
+    SignalCheck check;
+    const py::gil_scoped_release nogil;
+    scene.runToEnd(std::ref(check));
+  });
+}
+
+// A push by impulse or by step, at an angle or on a face: the loader's
+// script push, its fields named as the arguments.
+void push(const py::handle& self, const std::string& entity, std::optional<double> impulse,
+          std::optional<double> step, std::optional<double> angle, std::optional<std::string> face) {
+  with(self, [&](SteppedScene& scene) {
+    Arrow arrow;
+    arrow.entity = checkedEntity("push: entity", scene.scenario(), entity);
+    if (impulse.has_value() == step.has_value()) throw py::value_error("push: expected exactly one of 'step', 'impulse'");
+    if (face && angle) throw py::value_error("push: expected at most one of 'face', 'angle'");
+    if (face) {
+      arrow.face = directionFromString(*face);
+      if (!arrow.face) {
+        throw py::value_error("push: face: expected one of Left, Right, Front, Back, got \"" + shownText(*face, 40) +
+                              "\"");
+      }
+    } else {
+      arrow.angleDegrees = angle ? checkedNumber("push: angle", *angle, ranges::kAngle) : 0.0;
+    }
+    const PushMagnitude magnitude =
+        impulse ? PushMagnitude{PushMagnitude::Kind::Impulse, checkedNumber("push: impulse", *impulse, ranges::kImpulse)}
+                : PushMagnitude{PushMagnitude::Kind::Step, checkedNumber("push: step", *step, ranges::kStep)};
+    scene.push(arrow, magnitude);
+  });
+}
+
+void rotate(const py::handle& self, const std::string& entity, double degrees) {
+  with(self, [&](SteppedScene& scene) {
+    const std::string& name = checkedEntity("rotate: entity", scene.scenario(), entity);
+    scene.rotate(name, checkedNumber("rotate: degrees", degrees, ranges::kAngle));
+  });
+}
+
+py::array_t<std::uint8_t> render(const py::handle& self, const py::object& width, const py::object& height,
+                                 const std::string& camera, bool arrow) {
+  return with(self, [&](SteppedScene& scene) {
+    const int w = static_cast<int>(checkedInteger("render: width", width, 1, kMaxImageSide));
+    const int h = static_cast<int>(checkedInteger("render: height", height, 1, kMaxImageSide));
+    const auto chosen = CameraChoice::forScene(camera, scene.scenario());
+    if (const auto* why = std::get_if<std::string>(&chosen)) throw py::value_error("render: camera: " + *why);
+    Image image;
+    {
+      const py::gil_scoped_release nogil;
+      image = scene.render(w, h, std::get<CameraChoice>(chosen), arrow);
+    }
+    py::array_t<std::uint8_t> out({h, w, 3});
+    std::copy(image.rgb.begin(), image.rgb.end(), out.mutable_data());
+    return out;
+  });
+}
+
+// One row per entity, in scenario order, of `columns` numbers picked from
+// each body's motion.
+template <typename Pick>
+py::array_t<double> rows(const py::handle& self, int columns, Pick pick) {
+  return with(self, [&](SteppedScene& scene) {
+    const std::vector<BodyMotion> motions = scene.simulation().motions();
+    py::array_t<double> out({static_cast<py::ssize_t>(motions.size()), static_cast<py::ssize_t>(columns)});
+    auto view = out.mutable_unchecked<2>();
+    for (std::size_t i = 0; i < motions.size(); ++i) {
+      const std::vector<double> row = pick(motions[i]);
+      for (int c = 0; c < columns; ++c) view(static_cast<py::ssize_t>(i), c) = row[static_cast<std::size_t>(c)];
+    }
+    return out;
+  });
+}
+
+std::vector<double> xyz(const Vec3& v) { return {v.x, v.y, v.z}; }
+
+}  // namespace
+
+void bindSimulation(py::module_& m) {
+  py::class_<SimulationObject> simulation(
+      m, "Simulation",
+      "A scenario stepped from Python in one mode. Arrays have one row per entity, in the scenario's order. One "
+      "call at a time uses it (another thread's call waits); stepping and drawing release the GIL; close() frees "
+      "it (or use it in a with block).");
+  simulation.attr("__init__") = py::cpp_function(
+      &initialise, py::is_method(simulation), py::arg("scene"), py::kw_only(),
+      py::arg("mode") = "bullet", py::arg("script") = true, py::arg("timestep") = py::none(),
+      py::arg("iterations") = py::none(), py::arg("integrator") = py::none(),
+      "Builds the scene in mode 'bullet', 'compat' or 'rules'. With script True its script is carried out as time "
+      "passes; with False only the pushes given from Python happen. timestep, iterations and integrator override "
+      "the scenario's, within its limits. A second __init__ on a live Simulation raises RuntimeError.");
+  simulation
+      .def("step", &step, py::arg("n") = 1,
+           "Advances n fixed timesteps (carrying out the script's actions as they fall due): n from 0 to 1e7, and "
+           "at most 1e11 solver work (n x max_substeps x iterations x entities), as a scenario's run. Raises "
+           "DivergenceError if a body leaves the scene's bounds; Ctrl-C stops it between steps.")
+      .def("run_to_end", &runToEnd,
+           "Steps until the scenario's duration is reached, or its script is done and everything rests. Ctrl-C "
+           "stops it between steps.")
+      .def("push", &push, py::arg("entity"), py::kw_only(), py::arg("impulse") = py::none(),
+           py::arg("step") = py::none(), py::arg("angle") = py::none(), py::arg("face") = py::none(),
+           "Pushes an entity now by an impulse (N s, up to 1e6) or by a step (m, up to 100: the impulse that makes "
+           "it, alone on the table, travel that far), at a world angle in degrees (0 is +X, 90 is -Z; the default) "
+           "or on a face (Front, Back, Left, Right).")
+      .def("rotate", &rotate, py::arg("entity"), py::arg("degrees"),
+           "Turns an entity about its own vertical axis (the report's Rotate), degrees within +-1e6.")
+      .def("render", &render, py::arg("width") = 640, py::arg("height") = 480, py::kw_only(),
+           py::arg("camera") = "fit", py::arg("arrow") = true,
+           "The scene now, drawn headless (OSMesa) and anti-aliased, as a NumPy array of shape (height, width, 3), "
+           "uint8 RGB, top row first; each side 1 to 8192 pixels. camera is render's --camera: fit (the scene as it "
+           "is now), front, corner, side, top, follow:NAME or 'EX,EY,EZ:TX,TY,TZ'.")
+      .def("close", [](const py::handle& self) { initialised(self).close(); },
+           "Frees the scene (waiting for a call running in another thread); every later call but close() raises "
+           "RuntimeError.")
+      .def("__enter__", [](const py::object& self) { return self; })
+      .def("__exit__", [](const py::handle& self, const py::args&) { initialised(self).close(); })
+      .def_property_readonly("closed", [](const py::handle& self) { return initialised(self).closed(); },
+                             "True once close() was called.")
+      .def_property_readonly(
+          "positions", [](const py::handle& s) { return rows(s, 3, [](const BodyMotion& b) { return xyz(b.position); }); },
+          "Centres, m, shape (n, 3).")
+      .def_property_readonly(
+          "orientations",
+          [](const py::handle& s) {
+            return rows(s, 4, [](const BodyMotion& b) { return std::vector<double>(b.orientation.begin(), b.orientation.end()); });
+          },
+          "Unit quaternions w, x, y, z, shape (n, 4).")
+      .def_property_readonly(
+          "velocities",
+          [](const py::handle& s) { return rows(s, 3, [](const BodyMotion& b) { return xyz(b.linearVelocity); }); },
+          "Linear velocities, m/s, shape (n, 3).")
+      .def_property_readonly(
+          "angular_velocities",
+          [](const py::handle& s) { return rows(s, 3, [](const BodyMotion& b) { return xyz(b.angularVelocity); }); },
+          "Angular velocities, rad/s, world frame, shape (n, 3).")
+      .def_property_readonly(
+          "names", [](const py::handle& s) { return with(s, [](SteppedScene& x) { return entityNames(x.scenario()); }); },
+          "The entities' names, in the arrays' order.")
+      .def_property_readonly(
+          "time", [](const py::handle& s) { return with(s, [](SteppedScene& x) { return x.simulation().time(); }); },
+          "Simulated seconds.")
+      .def_property_readonly(
+          "steps", [](const py::handle& s) { return with(s, [](SteppedScene& x) { return x.simulation().steps(); }); },
+          "Steps taken.")
+      .def_property_readonly(
+          "timestep",
+          [](const py::handle& s) { return with(s, [](SteppedScene& x) { return x.scenario().settings.timestep; }); },
+          "The fixed timestep, s.")
+      .def_property_readonly(
+          "at_rest", [](const py::handle& s) { return with(s, [](SteppedScene& x) { return x.simulation().allAtRest(); }); },
+          "True when no entity moves.")
+      .def_property_readonly(
+          "finished", [](const py::handle& s) { return with(s, [](SteppedScene& x) { return x.finished(); }); },
+          "True once the duration is reached, or the script is done and all rests.")
+      .def_property_readonly(
+          "mode",
+          [](const py::handle& s) { return with(s, [](SteppedScene& x) { return std::string(x.simulation().modeName()); }); },
+          "'bullet', 'compat' or 'rules'.")
+      .def(
+          "result", [](const py::handle& s) { return with(s, [](SteppedScene& x) { return fromJson(toJson(x.result())); }); },
+          "The state now as run --json gives it: entities (position, orientation, velocities, status, support), "
+          "events, state_hash.");
+}
+
+}  // namespace tabletop::python

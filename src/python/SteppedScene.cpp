@@ -1,0 +1,44 @@
+#include "python/SteppedScene.h"
+
+#include "draw/SceneDrawing.h"
+#include "headless/HeadlessFrames.h"
+#include "sim/SceneBuilder.h"
+#include "sim/ScriptRunner.h"
+
+namespace tabletop::python {
+
+SteppedScene::SteppedScene(Scenario scenario, SimulationMode mode, bool script)
+    : scenario_(std::make_unique<Scenario>(std::move(scenario))) {
+  if (!script) scenario_->script.clear();
+  simulation_ = buildSimulation(*scenario_, scenario_->settings, mode);
+  player_ = std::make_unique<ScriptPlayer>(*scenario_, scenario_->settings, *simulation_);
+  player_->runDue();
+}
+
+void SteppedScene::step(long long n, const std::function<void()>& between) {
+  for (long long k = 0; k < n; ++k) {
+    player_->step();
+    between();
+  }
+}
+
+void SteppedScene::runToEnd(const std::function<void()>& between) {
+  player_->runDue();
+  while (!player_->finished()) {
+    player_->step();
+    between();
+  }
+}
+
+Image SteppedScene::render(int width, int height, const CameraChoice& camera, bool arrow) const {
+  const std::vector<EntityState> states = simulation_->snapshot();
+  const HeadlessFrames frames(width, height);
+  DrawOptions options;
+  options.arrow = arrow;
+  return frames.draw(makeDrawList(*scenario_, states, player_->arrow(), {}, options),
+                     cameraFor(camera, *scenario_, states, SceneExtent::of(*scenario_, states), double(width) / height));
+}
+
+RunResult SteppedScene::result() const { return outcomeNow(*scenario_, scenario_->settings, *simulation_); }
+
+}  // namespace tabletop::python
