@@ -95,7 +95,7 @@ void addBenchOptions(CLI::App& command, BenchOptions& options) {
   command.add_option("--pile-budget", options.pileBudget,
                      "Wall seconds a pile's tabletop run may take before it stops and larger piles are left out "
                      "(default 120)")
-      ->check(CLI::Range(0.001, 86400.0));
+      ->check(finiteRange(0.001, 86400.0));
   command.add_flag("--hard", options.hard,
                    "Run each hard case (SCENARIOS/hard) once at its own settings: cost, drift, penetration, "
                    "speed at rest, energy gain");
