@@ -5,29 +5,18 @@
 #include <cmath>
 #include <vector>
 
+#include "core/StateHash.h"
+#include "measure/SettledWatch.h"
 #include "physics/World.h"
 #include "sim/SceneBuilder.h"
 
 namespace tabletop {
 namespace {
 
-// Kinetic (translational and rotational) plus potential energy above the
-// floor of every entity, J.
-double mechanicalEnergy(const World& world, double gravity) {
+// Kinetic, rotational and potential energy of every entity, J.
+double totalEnergy(const World& world, double gravity) {
   double e = 0.0;
-  for (const auto& entity : world.entities()) {
-    const btRigidBody& body = *entity->body();
-    if (body.getInvMass() == 0) continue;
-    const double m = 1.0 / body.getInvMass();
-    const btVector3 w = body.getWorldTransform().getBasis().transpose() * body.getAngularVelocity();
-    const btVector3 inv = body.getInvInertiaDiagLocal();
-    double rotational = 0.0;
-    for (int k = 0; k < 3; ++k) {
-      if (inv[k] > 0) rotational += w[k] * w[k] / inv[k];
-    }
-    e += 0.5 * m * body.getLinearVelocity().length2() + 0.5 * rotational +
-         m * gravity * body.getCenterOfMassPosition().y();
-  }
+  for (const auto& entity : world.entities()) e += mechanicalEnergy(*entity->body(), gravity);
   return e;
 }
 
@@ -68,7 +57,7 @@ StabilityReport probeStability(const Scenario& scenario, const Settings& setting
   try {
     player.runDue();
     while (true) {
-      const double e = mechanicalEnergy(*world, settings.gravity);
+      const double e = totalEnergy(*world, settings.gravity);
       r.energyScale = std::max(r.energyScale, std::abs(e));
       if (player.pushes() != pushes) {
         pushes = player.pushes();
@@ -91,6 +80,7 @@ StabilityReport probeStability(const Scenario& scenario, const Settings& setting
   }
   r.steps = world->steps();
   r.simulated = world->time();
+  r.stateHash = stateHash(world->snapshot());
   r.solverUse = world->solverUse();
   return r;
 }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <limits>
 #include <string>
 
@@ -34,6 +35,7 @@ struct StabilityReport {
   bool complete = true;   ///< false if the divergence guard stopped the run
   std::string failure;    ///< the guard's message when not complete
   long steps = 0;
+  std::uint64_t stateHash = 0;  ///< the state at the end (core/StateHash.h)
   SolverUse solverUse;       ///< how the islands were solved over the run
   double simulated = 0.0;    ///< s
   double wallSeconds = 0.0;  ///< s, the stepping alone

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "core/StateHash.h"
+#include "measure/RandomRunCheck.h"
 #include "scenario/ScenarioError.h"
 #include "scenario/ScenarioLoader.h"
 #include "sim/ModeComparison.h"
@@ -52,11 +53,51 @@ void modeCells(const SweepSpec& spec, SimulationMode m, const RecordedRun& run, 
   row.push_back(run.run.failure);
 }
 
+// JSON has no NaN: a diverged run's non-finite numbers are null, so a row
+// reads the same whichever process computed it.
+SweepRow finiteOrNull(SweepRow row) {
+  for (json& v : row) {
+    if (v.is_number_float() && !std::isfinite(v.get<double>())) v = nullptr;
+  }
+  return row;
+}
+
+// The random runs' columns after "run" and "seed" (SweepRandom).
+std::vector<std::string> randomColumns(const SweepSpec& spec) {
+  std::vector<std::string> c{"bodies", "pushes"};
+  for (const char* what : {"stable", "reason", "under_floor_m", "farthest_m", "reach_m", "energy_excess_J",
+                           "energy_gain_J", "energy_scale_J"}) {
+    c.push_back(std::string("bullet.") + what);
+  }
+  if (spec.record.cost) c.push_back("bullet.wall_s");
+  if (spec.record.stateHash) c.push_back("bullet.state_hash");
+  c.insert(c.end(), {"bullet.failure", "problem"});
+  return c;
+}
+
+// A random run's row: its check (measure/RandomRunCheck.h), cell by cell.
+SweepRow randomRow(const SweepSpec& spec, std::size_t index, const StepObserver& afterStep) {
+  const RandomRunCheck c = checkRandomRun(spec.seed + index, spec.random->rate > 0 ? 1.0 / spec.random->rate : 0.0,
+                                          afterStep);
+  const StabilityReport& r = c.report;
+  SweepRow row{index, c.seed, c.bodies, c.pushes, c.stable(), c.reason, c.underFloor, r.farthest, c.reach,
+               r.energyExcess, r.energyGain, r.energyScale};
+  if (spec.record.cost) row.push_back(r.wallSeconds);
+  if (spec.record.stateHash) row.push_back(formatHash(r.stateHash));
+  row.insert(row.end(), {r.failure, ""});
+  return row;
+}
+
 }  // namespace
 
 std::vector<std::string> sweepColumns(const SweepSpec& spec) {
   std::vector<std::string> c{"run"};
-  for (const SweepParameter& p : spec.parameters) c.push_back(p.name);
+  for (const std::string& name : spec.valueNames()) c.push_back(name);
+  if (spec.random) {
+    const std::vector<std::string> rest = randomColumns(spec);
+    c.insert(c.end(), rest.begin(), rest.end());
+    return c;
+  }
   for (SimulationMode m : spec.modes) {
     const std::string mode = prefix(m);
     if (spec.record.positions) {
@@ -90,6 +131,7 @@ std::string firstReason(const std::string& verdict) {
 }
 
 SweepRow runSweepRow(const SweepSpec& spec, std::size_t index, const StepObserver& afterStep) {
+  if (spec.random) return finiteOrNull(randomRow(spec, index, afterStep));
   SweepRow row{index};
   for (json& v : spec.valuesOf(index)) row.push_back(std::move(v));
   const std::size_t width = sweepColumns(spec).size();
@@ -110,12 +152,7 @@ SweepRow runSweepRow(const SweepSpec& spec, std::size_t index, const StepObserve
     row.resize(width - 1, json());
     row.push_back(e.problems().empty() ? std::string(e.what()) : e.problems().front().message);
   }
-  // JSON has no NaN: a diverged run's non-finite numbers are null here, so
-  // a row reads the same whichever process computed it.
-  for (json& v : row) {
-    if (v.is_number_float() && !std::isfinite(v.get<double>())) v = nullptr;
-  }
-  return row;
+  return finiteOrNull(row);
 }
 
 }  // namespace tabletop

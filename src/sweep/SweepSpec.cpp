@@ -23,6 +23,7 @@ double unit(std::uint64_t seed, std::size_t run, std::size_t parameter, int k) {
 }  // namespace
 
 std::size_t SweepSpec::runs() const {
+  if (random) return random->runs;
   std::size_t n = samples;
   for (const SweepParameter& p : parameters) {
     if (p.kind == SweepParameter::Kind::List) n *= p.values.size();
@@ -31,6 +32,7 @@ std::size_t SweepSpec::runs() const {
 }
 
 std::vector<nlohmann::json> SweepSpec::valuesOf(std::size_t index) const {
+  if (random) return {seed + index};
   std::vector<nlohmann::json> out(parameters.size());
   // The grid point, with the last listed parameter varying fastest.
   std::size_t point = index / samples;
@@ -53,6 +55,13 @@ std::vector<nlohmann::json> SweepSpec::valuesOf(std::size_t index) const {
   return out;
 }
 
+std::vector<std::string> SweepSpec::valueNames() const {
+  if (random) return {"seed"};
+  std::vector<std::string> names;
+  for (const SweepParameter& p : parameters) names.push_back(p.name);
+  return names;
+}
+
 std::string SweepSpec::sceneOf(std::size_t index) const {
   nlohmann::json s = scene;
   const std::vector<nlohmann::json> values = valuesOf(index);
@@ -63,16 +72,23 @@ std::string SweepSpec::sceneOf(std::size_t index) const {
 }
 
 std::string SweepSpec::selfContained() const {
-  nlohmann::json j{{"version", 1}, {"name", name}, {"scene", scene}, {"samples", samples}, {"seed", seed}};
-  nlohmann::json params = nlohmann::json::array();
-  for (const SweepParameter& p : parameters) {
-    nlohmann::json q{{"name", p.name}, {"pointer", p.pointers}};
-    if (p.kind == SweepParameter::Kind::List) q["values"] = p.values;
-    if (p.kind == SweepParameter::Kind::Uniform) q["random"] = {{"uniform", {p.a, p.b}}};
-    if (p.kind == SweepParameter::Kind::Normal) q["random"] = {{"normal", {p.a, p.b}}};
-    params.push_back(q);
+  nlohmann::json j{{"version", 1}, {"name", name}, {"seed", seed}};
+  if (random) {
+    j["random"] = {{"runs", random->runs}};
+    if (random->rate > 0) j["random"]["rate"] = random->rate;
+  } else {
+    nlohmann::json params = nlohmann::json::array();
+    for (const SweepParameter& p : parameters) {
+      nlohmann::json q{{"name", p.name}, {"pointer", p.pointers}};
+      if (p.kind == SweepParameter::Kind::List) q["values"] = p.values;
+      if (p.kind == SweepParameter::Kind::Uniform) q["random"] = {{"uniform", {p.a, p.b}}};
+      if (p.kind == SweepParameter::Kind::Normal) q["random"] = {{"normal", {p.a, p.b}}};
+      params.push_back(q);
+    }
+    j["scene"] = scene;
+    j["samples"] = samples;
+    j["parameters"] = params;
   }
-  j["parameters"] = params;
   nlohmann::json modeNames = nlohmann::json::array();
   for (SimulationMode m : modes) modeNames.push_back(std::string(toString(m)));
   j["modes"] = modeNames;

@@ -3,6 +3,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,10 +36,19 @@ struct SweepRecord {
   bool stateHash = true;  ///< each mode's state_hash
 };
 
+/// The random stability runs (hard case 9, measure/RandomRunCheck.h) in
+/// place of a scene and its parameters: run k is RandomScene's scene for
+/// the sweep's seed + k, run in full physics and judged.
+struct SweepRandom {
+  std::size_t runs = 0;
+  double rate = 0.0;  ///< steps per second, Hz; 0: the default settings' step
+};
+
 /// A checked sweep spec (the format: docs/sweep.md; data/schema/sweep.schema.json):
 /// a base scene, the parameters varied over it, the modes, what to record.
 /// The runs are the grid of the listed parameters (the first varying
-/// slowest), each repeated `samples` times with fresh random draws.
+/// slowest), each repeated `samples` times with fresh random draws; or,
+/// with `random`, the random stability runs from `seed` on.
 struct SweepSpec {
   static constexpr std::size_t kMaxFileBytes = 1u << 20;  ///< a spec file's size
   static constexpr int kMaxDepth = 32;                    ///< nesting in a spec
@@ -60,12 +70,16 @@ struct SweepSpec {
   std::vector<SimulationMode> modes;  ///< in the order rules, compat, bullet
   SweepRecord record;
   std::vector<std::string> entities;  ///< the base scene's entity names
+  std::optional<SweepRandom> random;  ///< the random runs, in place of scene and parameters
   std::shared_ptr<const JsonLocator> locator;
 
   /// How many runs the sweep has.
   std::size_t runs() const;
-  /// Run `index`'s value of each parameter (the same in every process).
+  /// Run `index`'s value of each parameter (the same in every process);
+  /// of the random runs, its seed.
   std::vector<nlohmann::json> valuesOf(std::size_t index) const;
+  /// The columns valuesOf() fills: the parameters' names, or "seed".
+  std::vector<std::string> valueNames() const;
   /// Run `index`'s scene as JSON text.
   std::string sceneOf(std::size_t index) const;
   /// The spec as one JSON document with the scene inlined, which loads

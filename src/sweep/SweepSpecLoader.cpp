@@ -8,6 +8,7 @@
 #include "scenario/JsonText.h"
 #include "scenario/ScenarioError.h"
 #include "scenario/ScenarioLoader.h"
+#include "scenario/ValueRanges.h"
 #include "sweep/SpecChecker.h"
 #include "sweep/SweepSpec.h"
 
@@ -218,6 +219,40 @@ SweepRecord record(const json& r, SpecChecker& c) {
   return out;
 }
 
+// "random": the random stability runs in place of a scene and parameters
+// (SweepRandom): run in full physics alone, recording their checks and,
+// as asked, cost and state_hash.
+void readRandom(const json& root, SweepSpec& spec, SpecChecker& c) {
+  for (const char* key : {"scene", "set", "parameters", "samples"}) {
+    if (root.contains(key)) c.fail(std::string("/") + key, "a sweep of random scenes draws its own; remove this key");
+  }
+  if (spec.modes.size() > 1 || (spec.modes.size() == 1 && spec.modes.front() != SimulationMode::Bullet)) {
+    c.fail("/modes", "expected [\"bullet\"]: the random runs are judged in full physics");
+  }
+  spec.modes = {SimulationMode::Bullet};
+  if (!root.contains("record")) spec.record = SweepRecord{false, false, false, true, true};
+  if (spec.record.positions || spec.record.events || spec.record.distance) {
+    c.fail("/record", "a sweep of random scenes records its checks, \"cost\" and \"state_hash\" only");
+  }
+  const json& r = root["random"];
+  if (!r.is_object()) {
+    c.fail("/random", "expected an object {\"runs\", \"rate\"}, got " + shown(r));
+    return;
+  }
+  c.onlyKeys(r, "/random", {"runs", "rate"});
+  SweepRandom random;
+  if (!r.contains("runs")) c.fail("/random", "missing required key 'runs'");
+  else random.runs = c.count(r["runs"], "/random/runs", 1, SweepSpec::kMaxRuns, 0);
+  if (r.contains("rate") && c.isNumber(r["rate"], "/random/rate")) {
+    random.rate = r["rate"].get<double>();
+    if (!(random.rate > 0) || !ranges::inRange(1.0 / random.rate, ranges::kTimestep)) {
+      c.fail("/random/rate", "expected a rate from " + ranges::number(1.0 / ranges::kTimestep.hi) + " to " +
+                                 ranges::number(1.0 / ranges::kTimestep.lo) + " Hz, got " + shown(r["rate"]));
+    }
+  }
+  spec.random = random;
+}
+
 SweepSpec read(const json& root, const std::string& source, const std::string& shipped, bool checkEveryRun,
                SpecChecker& c) {
   SweepSpec spec;
@@ -227,9 +262,13 @@ SweepSpec read(const json& root, const std::string& source, const std::string& s
     return spec;
   }
   c.onlyKeys(root, "",
-             {"version", "name", "description", "scene", "set", "parameters", "samples", "seed", "modes", "record"});
+             {"version", "name", "description", "scene", "set", "parameters", "samples", "seed", "modes", "record",
+              "random"});
+  const bool random = root.contains("random");
   for (const char* key : {"version", "name", "scene", "parameters", "modes"}) {
-    if (!root.contains(key)) c.fail("", std::string("missing required key '") + key + "'");
+    if (!root.contains(key) && !(random && std::string(key) != "version" && std::string(key) != "name")) {
+      c.fail("", std::string("missing required key '") + key + "'");
+    }
   }
   if (root.contains("version") && root["version"] != 1) c.fail("/version", "expected 1, got " + shown(root["version"]));
   if (root.contains("name")) spec.name = c.name(root["name"], "/name");
@@ -246,6 +285,10 @@ SweepSpec read(const json& root, const std::string& source, const std::string& s
   }
   if (root.contains("modes")) spec.modes = modes(root["modes"], c);
   if (root.contains("record")) spec.record = record(root["record"], c);
+  if (random) {
+    readRandom(root, spec, c);
+    return spec;
+  }
   if (root.contains("scene")) spec.scene = baseScene(root["scene"], "/scene", source, shipped, c, spec.sceneSource);
   if (!spec.scene.is_object()) return spec;
   // Each run's scene is built from the base's text: its size bounds the

@@ -113,11 +113,12 @@ void SweepTable::resume(const SweepSpec& spec) {
   std::vector<std::string> jsonLines;
   const std::vector<std::size_t> jsonEnds = lineEnds(jsonPath(), &jsonLines);
   std::size_t n = std::min(csvEnds.size() - 1, jsonEnds.size());
+  const std::vector<std::string> names = spec.valueNames();
   for (std::size_t k = 0; k < n; ++k) {
     const json j = json::parse(jsonLines[k], nullptr, false);
     bool same = j.is_object() && j.value("run", json()) == json(k) && k < spec.runs();
     const std::vector<json> values = same ? spec.valuesOf(k) : std::vector<json>{};
-    for (std::size_t p = 0; same && p < values.size(); ++p) same = j.value(spec.parameters[p].name, json()) == values[p];
+    for (std::size_t p = 0; same && p < values.size(); ++p) same = j.value(names[p], json()) == values[p];
     if (!same) {
       throw failure(jsonPath() + ":" + std::to_string(k + 1), "holds another sweep's run " + std::to_string(k) +
                                                                    "; give another --out");

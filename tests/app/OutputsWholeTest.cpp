@@ -103,7 +103,7 @@ TEST(OutputsWhole, OutAndTraceCannotNameOneFile) {
   std::filesystem::create_directories(dir + "/sub");
   const std::string file = dir + "/f.txt";
   // A file not made yet, by two spellings of its path.
-  for (const std::string other : {file, dir + "/./f.txt", dir + "/sub/../f.txt"}) {
+  for (const std::string& other : std::vector<std::string>{file, dir + "/./f.txt", dir + "/sub/../f.txt"}) {
     const Outcome o = runArgs({"run", example, "--out", file, "--trace", other});
     EXPECT_EQ(o.status, 2) << other << ": " << o.err;
     EXPECT_NE(o.err.find("name the same file"), std::string::npos) << o.err;
@@ -113,7 +113,7 @@ TEST(OutputsWhole, OutAndTraceCannotNameOneFile) {
   std::ofstream(file) << "old";
   std::filesystem::create_symlink(file, dir + "/link.txt");
   std::filesystem::create_hard_link(file, dir + "/hard.txt");
-  for (const std::string other : {dir + "/link.txt", dir + "/hard.txt"}) {
+  for (const std::string& other : std::vector<std::string>{dir + "/link.txt", dir + "/hard.txt"}) {
     const Outcome o = runArgs({"run", example, "--out", file, "--trace", other});
     EXPECT_EQ(o.status, 2) << other << ": " << o.err;
     EXPECT_EQ(contentOf(file), "old");

@@ -55,6 +55,31 @@ TEST(SweepCommand, RefusesABadSpecWithOneLocatedLine) {
   EXPECT_EQ(runArgs({"sweep", "/dev/zero"}).status, 2);
 }
 
+// --random N: the random stability runs from --seed on, a row each, the
+// summary saying how many are stable; the options that make no sense
+// together refused.
+TEST(SweepCommand, RandomRunsAreCheckedAndSummed) {
+  TempFolder folder("sweep_random");
+  const std::string prefix = folder.path() + "/r";
+  const Outcome o = runArgs({"sweep", "--random", "4", "--seed", "7", "--rate", "60", "--jobs", "2", "--out", prefix});
+  EXPECT_EQ(o.status, 0) << o.err;
+  const std::vector<nlohmann::json> rows = jsonLines(prefix + ".jsonl");
+  ASSERT_EQ(rows.size(), 4u);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    EXPECT_EQ(rows[i]["seed"], 7 + i);
+    EXPECT_EQ(rows[i]["bullet.stable"], true);
+  }
+  // With no table the summary goes to the errors' stream, after the rows.
+  const Outcome summed = runArgs({"sweep", "--random", "2", "--seed", "7", "--rate", "60", "--jobs", "1"});
+  EXPECT_EQ(summed.status, 0) << summed.err;
+  EXPECT_NE(summed.err.find("random: 2 runs; all stable"), std::string::npos) << summed.err;
+  EXPECT_EQ(runArgs({"sweep", "--seed", "7"}).status, 2);
+  EXPECT_EQ(runArgs({"sweep", "--random", "0"}).status, 2);
+  EXPECT_EQ(runArgs({"sweep", "--random", "2", "--rate", "nan"}).status, 2);
+  EXPECT_EQ(runArgs({"sweep", "--random", "2", "--rate", "1e9"}).status, 2);
+  EXPECT_EQ(runArgs({"sweep", example2Spec("sweep_both.json", 2), "--random", "2"}).status, 2);
+}
+
 TEST(SweepCommand, CtrlCKeepsWholeRowsAndTheSameCommandGoesOn) {
   TempFolder folder("sweep_interrupt");
   const std::string spec = example2Spec("sweep_interrupt.json", 40);

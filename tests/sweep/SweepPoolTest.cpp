@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <set>
 
+#include "core/StateHash.h"
+#include "measure/RandomRunCheck.h"
 #include "sim/ModeComparison.h"
 #include "scenario/ScenarioError.h"
 #include "scenario/ScenarioLoader.h"
@@ -60,6 +62,34 @@ TEST(SweepPool, TheTableIsTheSameRowForRowWhateverTheJobs) {
   std::set<std::string> hashes;
   for (const SweepRow& row : one) hashes.insert(row.at(hash).get<std::string>());
   EXPECT_EQ(hashes.size(), one.size());
+}
+
+// The random stability runs as a sweep: each row is the check the
+// hard-case test makes of its seed (measure/RandomRunCheck.h), and the
+// rows are the same on one worker and on three.
+TEST(SweepPool, RandomRowsAreTheirSeedsChecksWhateverTheJobs) {
+  const SweepSpec spec =
+      loadSweepText(R"({"version": 1, "name": "r", "seed": 100, "random": {"runs": 6, "rate": 60}})", "r", kShipped);
+  const std::vector<SweepRow> one = runAll(spec, 1);
+  ASSERT_EQ(one.size(), 6u);
+  EXPECT_EQ(runAll(spec, 3), one);
+  const std::vector<std::string> columns = sweepColumns(spec);
+  ASSERT_EQ(columns.size(), one.front().size());
+  const auto cell = [&columns](const SweepRow& row, const std::string& name) {
+    return row.at(static_cast<std::size_t>(std::find(columns.begin(), columns.end(), name) - columns.begin()));
+  };
+  for (std::size_t i = 0; i < one.size(); ++i) {
+    const RandomRunCheck c = checkRandomRun(100 + i, 1.0 / 60.0);
+    EXPECT_EQ(cell(one[i], "seed"), 100 + i);
+    EXPECT_EQ(cell(one[i], "bodies"), c.bodies);
+    EXPECT_EQ(cell(one[i], "bullet.stable"), c.stable());
+    EXPECT_EQ(cell(one[i], "bullet.energy_gain_J"), c.report.energyGain);
+    EXPECT_EQ(cell(one[i], "bullet.state_hash"), formatHash(c.report.stateHash));
+  }
+  // Another rate is another run.
+  const SweepSpec faster =
+      loadSweepText(R"({"version": 1, "name": "r", "seed": 100, "random": {"runs": 1, "rate": 240}})", "r", kShipped);
+  EXPECT_NE(cell(runAll(faster, 1).front(), "bullet.state_hash"), cell(one.front(), "bullet.state_hash"));
 }
 
 TEST(SweepPool, ARowComparesWithTheRulesAsCompareDoes) {

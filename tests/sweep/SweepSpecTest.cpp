@@ -81,6 +81,51 @@ TEST(SweepSpec, TheSelfContainedSpecLoadsToTheSameRuns) {
   for (std::size_t i = 0; i < spec.runs(); ++i) EXPECT_EQ(again.sceneOf(i), spec.sceneOf(i));
 }
 
+// A random sweep: run k is the random scene of seed + k, alone in full
+// physics, and its spec travels whole like any other.
+TEST(SweepSpec, RandomRunsAreSeedsFromTheFirstOn) {
+  const SweepSpec spec = load(R"({"version": 1, "name": "r", "seed": 40, "random": {"runs": 7, "rate": 60}})");
+  ASSERT_TRUE(spec.random);
+  EXPECT_EQ(spec.runs(), 7u);
+  EXPECT_EQ(spec.random->rate, 60.0);
+  EXPECT_EQ(spec.valueNames(), std::vector<std::string>{"seed"});
+  for (std::size_t i = 0; i < spec.runs(); ++i) EXPECT_EQ(spec.valuesOf(i), std::vector<nlohmann::json>{40 + i});
+  EXPECT_EQ(spec.modes, std::vector<SimulationMode>{SimulationMode::Bullet});
+  EXPECT_FALSE(spec.record.positions || spec.record.events || spec.record.distance);
+  EXPECT_TRUE(spec.record.cost && spec.record.stateHash);
+  const SweepSpec again = load(spec.selfContained());
+  ASSERT_TRUE(again.random);
+  EXPECT_EQ(again.runs(), 7u);
+  EXPECT_EQ(again.random->rate, 60.0);
+  EXPECT_EQ(again.valuesOf(6), spec.valuesOf(6));
+  // Without a rate: the default settings' step.
+  EXPECT_EQ(load(R"({"version": 1, "name": "r", "random": {"runs": 1}})").random->rate, 0.0);
+}
+
+TEST(SweepSpec, BadRandomSpecsAreRefusedWithLocatedLines) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {R"({"version": 1, "name": "r", "random": {"runs": 0}})", "at /random/runs: expected a whole number from 1"},
+      {R"({"version": 1, "name": "r", "random": {"runs": 200000}})", "to 100000, got 200000"},
+      {R"({"version": 1, "name": "r", "random": {}})", "at /random: missing required key 'runs'"},
+      {R"({"version": 1, "name": "r", "random": {"runs": 2, "rate": 1e9}})",
+       "spec.json:1:59: at /random/rate: expected a rate from 10 to 100000 Hz, got 1000000000"},
+      {R"({"version": 1, "name": "r", "random": {"runs": 2, "rate": -60}})", "at /random/rate: expected a rate"},
+      {R"({"version": 1, "name": "r", "random": {"runs": 2, "speed": 1}})", "at /random/speed: unknown key 'speed'"},
+      {R"({"version": 1, "name": "r", "random": 5})", "at /random: expected an object"},
+      {R"({"version": 1, "name": "r", "random": {"runs": 2}, "scene": "example2_two_cubes"})",
+       "at /scene: a sweep of random scenes draws its own"},
+      {R"({"version": 1, "name": "r", "random": {"runs": 2}, "parameters": []})", "at /parameters: a sweep of random"},
+      {R"({"version": 1, "name": "r", "random": {"runs": 2}, "modes": ["rules"]})",
+       "at /modes: expected [\"bullet\"]"},
+      {R"({"version": 1, "name": "r", "random": {"runs": 2}, "record": ["positions"]})",
+       "at /record: a sweep of random scenes records its checks"},
+  };
+  for (const auto& [text, expected] : cases) {
+    const std::string got = refusal(text);
+    EXPECT_NE(got.find(expected), std::string::npos) << "spec: " << text << "\nrefused with: " << got;
+  }
+}
+
 TEST(SweepSpec, BadSpecsAreRefusedWithLocatedLines) {
   // Each: a spec and what its refusal must say, line and column included.
   const std::vector<std::pair<std::string, std::string>> cases = {
