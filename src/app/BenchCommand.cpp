@@ -20,6 +20,7 @@
 #include "app/RunCommand.h"
 #include "core/Text.h"
 #include "io/AtomicFile.h"
+#include "io/ProcessPool.h"
 #include "scenario/ScenarioError.h"
 #include "scenario/ScenarioLoader.h"
 #include "measure/BenchRuns.h"
@@ -71,6 +72,10 @@ void addBenchOptions(CLI::App& command, BenchOptions& options) {
   command.add_flag("--json", options.json, "Print the measurements as JSON instead of tables");
   command.add_option("--repeats", options.repeats, "Timed runs per setting, after a warm-up (default 5)")
       ->check(CLI::Range(1, 1000));
+  command.add_option("--jobs", options.jobs,
+                     "Worker processes timing the sweep's settings at once, each setting on one core "
+                     "(default: every core)")
+      ->check(CLI::Range(1, kMaxJobs));
   command.add_option("--rates", options.rates, "Step rates to sweep, Hz (default 30,60,...,4000)")
       ->delimiter(',')
       ->check(finiteRange(1.0 / kMaxTimestep, 1.0 / kMinTimestep));
@@ -151,7 +156,8 @@ int runBench(const BenchOptions& asked, std::ostream& out, std::ostream& err) {
   std::map<std::string, std::vector<std::string>> skipped;  // per scene, a line per mode it cannot run in
   if (sweepAsked) {
     Progress progress(err);
-    points = measureSweep(scenes, grid, options.modes, options.repeats, hooks(interrupt, progress), skipped);
+    points = measureSweep(scenes, grid, options.modes, options.repeats, hooks(interrupt, progress), skipped,
+                          options.jobs > 0 ? options.jobs : availableCores());
   }
   markParetoFronts(points);
   std::vector<SwitchPoint> switchPoints;

@@ -23,6 +23,7 @@ struct BenchOptions {
   std::optional<std::string> frontFile;  ///< --write-front: the analytic cases' fronts, for run --tolerance
   bool json = false;
   int repeats = 5;                     ///< timed runs per setting, after one warm-up
+  int jobs = 0;                        ///< worker processes timing the sweep's settings; 0: every core
   std::vector<double> rates{30, 60, 120, 240, 480, 1000, 2000, 4000};  ///< Hz
   std::vector<int> iterations{4, 10, 20, 50};
   std::vector<Integrator> integrators{Integrator::Euler, Integrator::Trapezoid};

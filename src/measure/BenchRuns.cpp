@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "core/Broadphase.h"
+#include "io/ProcessPool.h"
 #include "measure/ModelSwitch.h"
 #include "scenario/ScenarioError.h"
 #include "scenario/ScenarioLoader.h"
@@ -86,42 +87,98 @@ Timed timed(int repeats, bool warmUp, double timestep, RunOnce runOnce) {
   return t;
 }
 
+// One setting of the grid: a scene, a mode and the settings.
+struct GridItem {
+  BenchScene* scene;
+  SimulationMode mode;
+  Settings settings;
+};
+
+// Times one setting: the warm-up also makes the scene's reference run, if
+// it has none yet.
+Timed timeItem(const GridItem& item, int repeats) {
+  return timed(repeats, true, item.settings.timestep, [&item] { return item.scene->run(item.settings, item.mode); });
+}
+
+BenchPoint pointOf(const GridItem& item, const Timed& t) {
+  BenchPoint p{item.scene->name(), item.settings.timestep, item.settings.iterations, item.settings.integrator,
+               item.mode};
+  p.costMs = t.costMs;
+  p.spread = t.spread;
+  p.error = t.last.error;
+  p.complete = t.last.complete;
+  p.reference = item.scene->isReference(item.settings, item.mode);
+  return p;
+}
+
+std::string describe(const GridItem& item) {
+  return item.scene->name() + " " + std::string(toString(item.mode)) + " " + fixed(1.0 / item.settings.timestep, 0) +
+         " Hz";
+}
+
+// The grid on worker processes (io/ProcessPool.h), a setting at a time
+// each, so each timing has a core to itself: first the reference runs,
+// a scene each, so that no two workers make the same one; then the
+// settings, each row the timing's median, spread, error and completeness.
+std::vector<BenchPoint> measureOnWorkers(const std::vector<GridItem>& items, int repeats, int jobs,
+                                         const MeasureHooks& hooks) {
+  std::vector<BenchScene*> needing;
+  for (const GridItem& item : items) {
+    if (item.scene->needsReference() && std::find(needing.begin(), needing.end(), item.scene) == needing.end()) {
+      needing.push_back(item.scene);
+    }
+  }
+  const auto reference = [&needing](std::size_t k) {
+    PoolRow row{k};
+    for (const Vec3& c : needing[k]->referenceCentres()) row.push_back({c.x, c.y, c.z});
+    return row;
+  };
+  runProcessPool(0, needing.size(), jobs, reference, [&needing](const PoolRow& row) {
+    std::vector<Vec3> centres;
+    for (std::size_t k = 1; k < row.size(); ++k) centres.push_back({row[k][0], row[k][1], row[k][2]});
+    needing[row[0].get<std::size_t>()]->setReference(std::move(centres));
+  }, hooks.stop);
+  std::vector<BenchPoint> points;
+  if (hooks.stop()) return points;
+  const auto setting = [&items, repeats](std::size_t i) {
+    const Timed t = timeItem(items[i], repeats);
+    return PoolRow{i, t.costMs, t.spread, t.last.error, t.last.complete};
+  };
+  runProcessPool(0, items.size(), jobs, setting, [&](const PoolRow& row) {
+    const GridItem& item = items[row[0].get<std::size_t>()];
+    Timed t;
+    t.costMs = row[1];
+    t.spread = row[2];
+    t.last.error = row[3];
+    t.last.complete = row[4];
+    points.push_back(pointOf(item, t));
+    hooks.advance(describe(item));
+  }, hooks.stop);
+  return points;
+}
+
 }  // namespace
 
 std::vector<BenchPoint> measureSweep(std::vector<BenchScene>& scenes, const SweepGrid& grid,
                                      const std::vector<SimulationMode>& modes, int repeats, const MeasureHooks& hooks,
-                                     std::map<std::string, std::vector<std::string>>& skipped) {
-  std::vector<std::pair<BenchScene*, SimulationMode>> jobs;
-  long total = 0;
+                                     std::map<std::string, std::vector<std::string>>& skipped, int jobs) {
+  std::vector<GridItem> items;
   for (BenchScene& scene : scenes) {
     for (SimulationMode mode : modes) {
       if (const auto why = refusal(scene.scenario(), mode)) {
         skipped[scene.name()].push_back("not in mode " + std::string(toString(mode)) + ": " + *why);
         continue;
       }
-      jobs.emplace_back(&scene, mode);
-      total += static_cast<long>(sweep(grid, scene.scenario(), mode).size());
+      for (const Settings& settings : sweep(grid, scene.scenario(), mode)) items.push_back({&scene, mode, settings});
     }
   }
-  hooks.start(total);
+  hooks.start(static_cast<long>(items.size()));
+  if (jobs > 1 && items.size() > 1) return measureOnWorkers(items, repeats, jobs, hooks);
   std::vector<BenchPoint> points;
-  for (const auto& [scene, mode] : jobs) {
-    for (const Settings& settings : sweep(grid, scene->scenario(), mode)) {
-      if (hooks.stop()) return points;
-      // The warm-up also makes the reference run, once per scene.
-      const Timed t = timed(repeats, true, settings.timestep, [&, scene = scene, mode = mode] {
-        return scene->run(settings, mode);
-      });
-      BenchPoint p{scene->name(), settings.timestep, settings.iterations, settings.integrator, mode};
-      p.costMs = t.costMs;
-      p.spread = t.spread;
-      p.error = t.last.error;
-      p.complete = t.last.complete;
-      p.reference = scene->isReference(settings, mode);
-      points.push_back(p);
-      hooks.advance(scene->name() + " " + std::string(toString(mode)) + " " + fixed(1.0 / settings.timestep, 0) +
-                    " Hz");
-    }
+  for (const GridItem& item : items) {
+    if (hooks.stop()) return points;
+    points.push_back(pointOf(item, timeItem(item, repeats)));
+    hooks.advance(describe(item));
   }
   return points;
 }

@@ -36,10 +36,13 @@ struct SweepGrid {
 
 /// Sweeps every scene in every mode of `modes` over the grid: each setting
 /// timed `repeats` times after a warm-up. A mode a scene cannot run in is
-/// skipped, with why, in `skipped` (per scene).
+/// skipped, with why, in `skipped` (per scene). With `jobs` > 1 the
+/// settings are timed on that many worker processes at once, one setting
+/// each, so each timing still runs on one core; the points are the same,
+/// in the same order, but for the timings.
 std::vector<BenchPoint> measureSweep(std::vector<BenchScene>& scenes, const SweepGrid& grid,
                                      const std::vector<SimulationMode>& modes, int repeats, const MeasureHooks& hooks,
-                                     std::map<std::string, std::vector<std::string>>& skipped);
+                                     std::map<std::string, std::vector<std::string>>& skipped, int jobs = 1);
 
 /// Each model switch (ModelSwitch) on every scene at its own settings.
 std::vector<SwitchPoint> measureSwitches(std::vector<BenchScene>& scenes, int repeats, const MeasureHooks& hooks);

@@ -41,22 +41,25 @@ BenchScene::Run BenchScene::run(const Settings& settings, SimulationMode mode) {
     return out;
   }
   out = measure(settings, mode);
-  if (!reference_) {
-    Settings fine = settings;
-    fine.timestep = kReferenceTimestep;
-    fine.iterations = kReferenceIterations;
-    fine.integrator = Integrator::Trapezoid;
-    // Full physics is the reference of every mode: what compat and rules
-    // give up by following the report's rules shows as their error.
-    auto reference = buildSimulation(scenario_, fine, SimulationMode::Bullet);
-    const RunResult ref = runScript(scenario_, fine, *reference);
-    reference_.emplace();
-    for (const EntityState& e : ref.entities) reference_->push_back(e.position);
-  }
+  if (!reference_) reference_ = referenceCentres();
   for (std::size_t i = 0; i < out.centres.size() && i < reference_->size(); ++i) {
     out.error = std::max(out.error, (out.centres[i] - (*reference_)[i]).length());
   }
   return out;
+}
+
+std::vector<Vec3> BenchScene::referenceCentres() const {
+  Settings fine = scenario_.settings;
+  fine.timestep = kReferenceTimestep;
+  fine.iterations = kReferenceIterations;
+  fine.integrator = Integrator::Trapezoid;
+  // Full physics is the reference of every mode: what compat and rules
+  // give up by following the report's rules shows as their error.
+  auto reference = buildSimulation(scenario_, fine, SimulationMode::Bullet);
+  const RunResult ref = runScript(scenario_, fine, *reference);
+  std::vector<Vec3> centres;
+  for (const EntityState& e : ref.entities) centres.push_back(e.position);
+  return centres;
 }
 
 BenchScene::Run BenchScene::measure(const Settings& settings, SimulationMode mode) {

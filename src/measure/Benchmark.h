@@ -42,6 +42,13 @@ class BenchScene {
     std::vector<Vec3> centres;  ///< every entity's final centre, m
   };
   Run run(const Settings& settings, SimulationMode mode = SimulationMode::Bullet);
+  /// Whether run() still has to make the reference run (the first run of
+  /// a scene that is not analytic makes it).
+  bool needsReference() const { return !analytic_ && !reference_; }
+  /// Makes the reference run: every entity's final centre, m.
+  std::vector<Vec3> referenceCentres() const;
+  /// The reference run's centres, made elsewhere (in another process).
+  void setReference(std::vector<Vec3> centres) { reference_ = std::move(centres); }
   /// As run(), without the error (no reference run is made): for scenes
   /// too large to run at the reference settings.
   Run measure(const Settings& settings, SimulationMode mode = SimulationMode::Bullet);

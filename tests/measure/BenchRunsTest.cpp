@@ -43,6 +43,42 @@ TEST(BenchRuns, SweepsTheGridAndStopsWhenAsked) {
   EXPECT_TRUE(measureSweep(scenes, grid, {SimulationMode::Bullet}, 1, hooks, skipped).empty());
 }
 
+// The grid on worker processes gives the points one process gives, in the
+// same order, but for the timings: an analytic case (its error against the
+// closed form) and a report example (against its reference run, made once
+// in a worker and handed back).
+TEST(BenchRuns, WorkersGiveTheSamePointsInTheSameOrder) {
+  const auto points = [](int jobs) {
+    std::vector<BenchScene> scenes;
+    for (const char* file : {"/scenarios/analytic/free_flight.json", "/scenarios/example1_single_cube.json"}) {
+      scenes.emplace_back(ScenarioLoader::loadFile(std::string(TABLETOP_SOURCE_DIR) + file));
+    }
+    const SweepGrid grid{{60.0, 120.0}, {10}, {Integrator::Trapezoid, Integrator::Euler}};
+    long done = 0;
+    MeasureHooks hooks;
+    hooks.advance = [&done](const std::string&) { ++done; };
+    std::map<std::string, std::vector<std::string>> skipped;
+    auto out = measureSweep(scenes, grid, {SimulationMode::Bullet, SimulationMode::Rules}, 1, hooks, skipped, jobs);
+    EXPECT_EQ(done, static_cast<long>(out.size())) << jobs;
+    return out;
+  };
+  const std::vector<BenchPoint> one = points(1), two = points(2);
+  ASSERT_EQ(one.size(), 10u);  // 4 settings each in full physics, example 1's 2 rates in the rules
+  ASSERT_EQ(two.size(), one.size());
+  for (std::size_t i = 0; i < one.size(); ++i) {
+    EXPECT_EQ(two[i].scene, one[i].scene) << i;
+    EXPECT_EQ(two[i].timestep, one[i].timestep) << i;
+    EXPECT_EQ(two[i].iterations, one[i].iterations) << i;
+    EXPECT_EQ(two[i].integrator, one[i].integrator) << i;
+    EXPECT_EQ(two[i].mode, one[i].mode) << i;
+    EXPECT_EQ(two[i].error, one[i].error) << i;
+    EXPECT_EQ(two[i].complete, one[i].complete) << i;
+    EXPECT_GT(two[i].costMs, 0.0) << i;
+  }
+  // The example's error is against a real reference run: not zero at 60 Hz.
+  EXPECT_GT(one[4].error, 0.0);
+}
+
 // The baseline times the scene both ways over tabletop's own run (free
 // flight never rests: its whole 0.4 s), a point per scene and rate.
 TEST(BenchRuns, TimesEachSceneAgainstBulletsOwnPipeline) {
