@@ -6,9 +6,10 @@ Between  <!-- NAME: begin -->  and  <!-- NAME: end -->  in docs/sweep.md:
          draws (docs/example2_angle_friction_map.png,
          docs/example4_offset_mass_map.png) from the specs in docs/sweeps/;
   speed  docs/sweeps/example2_1000_steps.json (1000 runs of example 2, rules
-         and bullet) with --jobs 1 and with every core, REPEATS times each:
-         the median wall and CPU times (of all the sweep's processes), with
-         the machine's load average (other programs running take cores from
+         and bullet) and the 10,000 random runs at 60 Hz (--random), each
+         with --jobs 1 and with every core, REPEATS times each: the median
+         wall and CPU times (of all the sweep's processes), with the
+         machine's load average (other programs running take cores from
          the sweep), and the speed-up the CPU times give on free cores;
   dask   docs/sweeps/example2_angle_friction.json through tabletop.sweep on
          a dask LocalCluster of one worker process against tabletop.sweep
@@ -51,12 +52,14 @@ def cpu_of_children():
     return r.ru_utime + r.ru_stime
 
 
-def sweep(tabletop, spec, out, *args):
-    """Runs a sweep into OUT.csv/.jsonl afresh: its wall time and CPU time in seconds, and its rows."""
+def sweep(tabletop, what, out, *args):
+    """Runs a sweep (WHAT: a spec, or a list of arguments) into OUT.csv/.jsonl afresh: its wall time
+    and CPU time in seconds, and its rows."""
     for suffix in (".csv", ".jsonl"):
         pathlib.Path(out + suffix).unlink(missing_ok=True)
     start, cpu = time.monotonic(), cpu_of_children()
-    subprocess.run([tabletop, "sweep", str(spec), "--out", out, *args], cwd=ROOT, check=True,
+    what = what if isinstance(what, list) else [str(what)]
+    subprocess.run([tabletop, "sweep", *what, "--out", out, *args], cwd=ROOT, check=True,
                    stdout=subprocess.DEVNULL, timeout=3600)
     wall, cpu = time.monotonic() - start, cpu_of_children() - cpu
     return wall, cpu, [json.loads(line) for line in open(out + ".jsonl")]
@@ -77,30 +80,36 @@ def maps(tabletop, tmp):
     return "\n".join(lines) + "\n"
 
 
+SPEED = [("1000 runs of example 2, rules and bullet", SWEEPS / "example2_1000_steps.json"),
+         ("10,000 random runs at 60 Hz", ["--random", "10000", "--rate", "60"])]
+
+
 def speed(tabletop, tmp):
-    spec = SWEEPS / "example2_1000_steps.json"
     cores = os.cpu_count()
-    walls, cpus, loads, tables = {1: [], cores: []}, {1: [], cores: []}, [], {}
-    for _ in range(REPEATS):
-        for jobs in (1, cores):
-            loads.append(os.getloadavg()[0])
-            wall, cpu, rows = sweep(tabletop, spec, f"{tmp}/speed{jobs}", "--jobs", str(jobs))
-            walls[jobs].append(wall)
-            cpus[jobs].append(cpu)
-            tables[jobs] = [{k: v for k, v in r.items() if not k.endswith(".wall_s")} for r in rows]
-    assert tables[1] == tables[cores], "the tables differ with the number of jobs"
-    one, many = statistics.median(walls[1]), statistics.median(walls[cores])
-    cpu_one, cpu_many = statistics.median(cpus[1]), statistics.median(cpus[cores])
-    # With the cores free, the workers' CPU time is split evenly among them
-    # (a thousand short runs, handed out one at a time, share out evenly).
-    free = cpu_one / (cpu_many / cores)
-    return (f"| runs | --jobs | wall [s] | CPU, all processes [s] |\n"
-            f"|---|---|---|---|\n"
-            f"| {len(tables[1])} | 1 | {one:.1f} | {cpu_one:.1f} |\n"
-            f"| {len(tables[1])} | {cores} | {many:.1f} | {cpu_many:.1f} |\n\n"
+    lines = ["| sweep | --jobs | wall [s] | CPU, all processes [s] | speed-up, measured | on free cores |",
+             "|---|---|---|---|---|---|"]
+    loads = []
+    for label, what in SPEED:
+        walls, cpus, tables = {1: [], cores: []}, {1: [], cores: []}, {}
+        for _ in range(REPEATS):
+            for jobs in (1, cores):
+                loads.append(os.getloadavg()[0])
+                wall, cpu, rows = sweep(tabletop, what, f"{tmp}/speed{jobs}", "--jobs", str(jobs))
+                walls[jobs].append(wall)
+                cpus[jobs].append(cpu)
+                tables[jobs] = [{k: v for k, v in r.items() if not k.endswith(".wall_s")} for r in rows]
+        assert tables[1] == tables[cores], "the tables differ with the number of jobs"
+        one, many = statistics.median(walls[1]), statistics.median(walls[cores])
+        cpu_one, cpu_many = statistics.median(cpus[1]), statistics.median(cpus[cores])
+        # With the cores free, the workers' CPU time is split evenly among them
+        # (many short runs, handed out one at a time, share out evenly).
+        free = cpu_one / (cpu_many / cores)
+        lines.append(f"| {label} | 1 | {one:.1f} | {cpu_one:.1f} | | |")
+        lines.append(f"| | {cores} | {many:.1f} | {cpu_many:.1f} | {one / many:.2f}x | {free:.2f}x |")
+    return ("\n".join(lines) + "\n\n"
             f"Medians of {REPEATS}; the load average (1 min) was {min(loads):.1f} to {max(loads):.1f} "
-            f"before each sweep on these {cores} cores. Measured speed-up {one / many:.2f}x; "
-            f"the CPU times give {free:.2f}x on {cores} free cores.\n")
+            f"before each sweep on these {cores} cores. The same tables, row for row, with either count "
+            f"of jobs.\n")
 
 
 def cpu_of_this_process():

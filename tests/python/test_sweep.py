@@ -1,5 +1,6 @@
 """tabletop.sweep: the command line's table as a DataFrame, here and on a Dask cluster."""
 import json
+import re
 import os
 import subprocess
 import sys
@@ -87,3 +88,40 @@ def test_the_schema_refuses_what_the_loader_refuses():
         jsonschema.validate(bad, schema("sweep.schema.json"))
     with pytest.raises(tabletop.ScenarioError, match="at /parameters/0/range/count: expected a whole number from 1"):
         tabletop.sweep(bad)
+
+
+RANDOM = {"version": 1, "name": "py_random", "seed": 30, "random": {"runs": 4, "rate": 60}}
+
+
+def test_the_random_runs_go_from_python_and_meet_the_schema(tabletop_bin):
+    import jsonschema  # pylint: disable=import-outside-toplevel
+    jsonschema.validate(RANDOM, schema("sweep.schema.json"))
+    for bad in (dict(RANDOM, scene="example2_two_cubes"), dict(RANDOM, modes=["rules"]),
+                dict(RANDOM, random={"runs": 0})):
+        with pytest.raises(jsonschema.ValidationError):
+            jsonschema.validate(bad, schema("sweep.schema.json"))
+        with pytest.raises(tabletop.ScenarioError):
+            tabletop.sweep(bad)
+    table = tabletop.sweep(RANDOM, jobs=2)
+    assert list(table["seed"]) == [30, 31, 32, 33]
+    assert table["bullet.stable"].all()
+    out = subprocess.run([tabletop_bin, "sweep", "--random", "4", "--seed", "30", "--rate", "60"],
+                         capture_output=True, text=True, check=True, env={"TABLETOP_DATA_DIR": str(SOURCE)}).stdout
+    rows = [json.loads(line) for line in out.splitlines()]
+    assert [r["bullet.state_hash"] for r in rows] == list(table["bullet.state_hash"])
+
+
+def test_the_maps_table_in_the_docs_is_what_the_sweeps_give():
+    """docs/sweep.md's maps table (docs/make-sweep.py writes it) against the sweeps run now."""
+    page = (SOURCE / "docs" / "sweep.md").read_text()
+    block = re.search(r"<!-- maps: begin -->\n(.*?)<!-- maps: end -->", page, re.S).group(1)
+    rows = [line for line in block.splitlines() if line.startswith("| `")]
+    assert len(rows) == 2
+    for line in rows:
+        spec, runs, agree, reasons = [cell.strip() for cell in line.strip().strip("|").split("|")]
+        table = tabletop.sweep(str(SOURCE / spec.strip("`")), jobs=2)
+        assert len(table) == int(runs), spec
+        assert int(table["bullet.agrees"].sum()) == int(agree), spec
+        counts = table.loc[~table["bullet.agrees"], "bullet.reason"].value_counts()
+        listed = dict((r.rsplit(" ", 1)[0], int(r.rsplit(" ", 1)[1])) for r in reasons.split(", ") if r)
+        assert listed == {k: int(v) for k, v in counts.items()}, spec
