@@ -43,16 +43,37 @@ constexpr PairRule kRules[] = {
     {kSphere, kCompound, F::kBullet, O::kNone, U::kDeepestOnly, true},
 };
 
+// Every pair of Bullet's shape types, each cell its rule: the step asks for
+// a manifold's rule in every part, and this answers without a search.
+constexpr int kTypes = MAX_BROADPHASE_COLLISION_TYPES;
+struct RuleGrid {
+  PairRule cell[kTypes][kTypes];
+};
+
+constexpr PairRule unlisted(int a, int b) { return {a, b, F::kBullet, O::kNone, U::kKept, true}; }
+
+constexpr RuleGrid makeGrid() {
+  RuleGrid g{};
+  for (int a = 0; a < kTypes; ++a) {
+    for (int b = 0; b < kTypes; ++b) g.cell[a][b] = unlisted(a, b);
+  }
+  for (const PairRule& rule : kRules) {
+    g.cell[rule.a][rule.b] = rule;
+    g.cell[rule.b][rule.a] = rule;
+  }
+  return g;
+}
+
+constexpr RuleGrid kGrid = makeGrid();
+
 }  // namespace
 
 const PairRule* pairRulesBegin() { return std::begin(kRules); }
 const PairRule* pairRulesEnd() { return std::end(kRules); }
 
 PairRule pairRule(int typeA, int typeB) {
-  for (const PairRule& rule : kRules) {
-    if ((rule.a == typeA && rule.b == typeB) || (rule.a == typeB && rule.b == typeA)) return rule;
-  }
-  return {typeA, typeB, F::kBullet, O::kNone, U::kKept, true};
+  if (typeA < 0 || typeB < 0 || typeA >= kTypes || typeB >= kTypes) return unlisted(typeA, typeB);
+  return kGrid.cell[typeA][typeB];
 }
 
 }  // namespace tabletop
