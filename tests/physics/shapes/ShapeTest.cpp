@@ -135,6 +135,33 @@ TEST(SolidBox, PolyhedronCornersAndFacesLieAtTheHalfExtents) {
   }
 }
 
+// The polyhedron is the one Bullet's own initialize() makes of it (the same
+// edge directions in the same order, the same centre, to the bit), but for
+// the box inside it that the separating-axis test skips axes by: that is
+// the box itself, a millionth smaller, and still inside every face, where
+// Bullet's search finds a box no larger.
+TEST(SolidBox, PolyhedronIsBulletsWithTheWholeBoxInside) {
+  for (int k = 1; k <= 400; k += 7) {
+    const double width = 0.0025 * k;
+    const SolidBox box("b", width, 0.6 * width, 1.3 * width);
+    const btConvexPolyhedron& ours = *static_cast<const btBoxShape&>(box.collisionShape()).getConvexPolyhedron();
+    btConvexPolyhedron bullets = ours;
+    bullets.m_uniqueEdges.clear();
+    bullets.initialize();
+    ASSERT_EQ(ours.m_uniqueEdges.size(), bullets.m_uniqueEdges.size()) << width;
+    for (int e = 0; e < ours.m_uniqueEdges.size(); ++e) {
+      EXPECT_EQ(ours.m_uniqueEdges[e], bullets.m_uniqueEdges[e]) << width << " m, edge " << e;
+    }
+    EXPECT_EQ(ours.m_localCenter, bullets.m_localCenter) << width;
+    EXPECT_TRUE(ours.testContainment()) << width;
+    for (int a = 0; a < 3; ++a) {
+      EXPECT_GE(ours.m_extents[a], bullets.m_extents[a] * (1.0 - 1e-6)) << width << " m, axis " << a;
+      EXPECT_NEAR(ours.m_extents[a], box.halfExtents()[a], 2e-6 * box.halfExtents()[a]) << width;
+    }
+    EXPECT_LE(ours.m_radius, bullets.m_radius) << width;
+  }
+}
+
 // A push on a box face meets the surface where the ray from the centre
 // leaves the box.
 TEST(SolidBox, SurfaceDistanceAlongAHorizontalRay) {
