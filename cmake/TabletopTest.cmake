@@ -61,15 +61,28 @@ endfunction()
 # module and command line (tests/python/conftest.py fails without them).
 function(tabletop_pytest name)
   cmake_parse_arguments(ARG "" "FILE;MARKS" "LABELS" ${ARGN})
+  set_property(DIRECTORY APPEND PROPERTY TABLETOP_PYTEST_FILES ${ARG_FILE})
+  set(env "PYTHONPATH=${PROJECT_BINARY_DIR}/python;TABLETOP_BIN=$<TARGET_FILE:tabletop>;TABLETOP_SOURCE_DIR=${PROJECT_SOURCE_DIR};MESA_SHADER_CACHE_DISABLE=true")
+  if(TABLETOP_SANITIZE)
+    # The sanitized module's memory is what this build checks: the physics
+    # and docs checks marked slow or docs run in the plain build alone.
+    if("slow" IN_LIST ARG_LABELS OR "docs" IN_LIST ARG_LABELS)
+      return()
+    endif()
+    # The runtime preloaded (cmake/TabletopDependencies.cmake says why),
+    # without leak checking: Python keeps much of what it allocates until
+    # exit by design.
+    list(APPEND env "LD_PRELOAD=${TABLETOP_PYTHON_PRELOAD}"
+      "ASAN_OPTIONS=detect_leaks=0:halt_on_error=1:abort_on_error=0:intercept_tls_get_addr=0"
+      "UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1")
+  endif()
   set(select "")
   if(ARG_MARKS)
     set(select -m "${ARG_MARKS}")
   endif()
   add_test(NAME ${name}
     COMMAND ${Python_EXECUTABLE} -m pytest -q -p no:cacheprovider ${select} ${PROJECT_SOURCE_DIR}/tests/python/${ARG_FILE})
-  set_tests_properties(${name} PROPERTIES LABELS "${ARG_LABELS}" TIMEOUT 900
-    ENVIRONMENT "PYTHONPATH=${PROJECT_BINARY_DIR}/python;TABLETOP_BIN=$<TARGET_FILE:tabletop>;TABLETOP_SOURCE_DIR=${PROJECT_SOURCE_DIR};MESA_SHADER_CACHE_DISABLE=true")
-  set_property(DIRECTORY APPEND PROPERTY TABLETOP_PYTEST_FILES ${ARG_FILE})
+  set_tests_properties(${name} PROPERTIES LABELS "${ARG_LABELS}" TIMEOUT 900 ENVIRONMENT "${env}")
 endfunction()
 
 # Python.EveryTestFileHasAnEntry: pytest collects nothing in tests/python
@@ -87,5 +100,5 @@ function(tabletop_check_pytest_files)
     COMMAND ${Python_EXECUTABLE} -m pytest --collect-only -q -p no:cacheprovider ${ignored} ${PROJECT_SOURCE_DIR}/tests/python)
   set_tests_properties(Python.EveryTestFileHasAnEntry PROPERTIES LABELS python TIMEOUT 120
     PASS_REGULAR_EXPRESSION "no tests collected in"
-    ENVIRONMENT "PYTHONPATH=${PROJECT_BINARY_DIR}/python;TABLETOP_BIN=$<TARGET_FILE:tabletop>;TABLETOP_SOURCE_DIR=${PROJECT_SOURCE_DIR}")
+    ENVIRONMENT "PYTHONPATH=${PROJECT_BINARY_DIR}/python;TABLETOP_BIN=$<TARGET_FILE:tabletop>;TABLETOP_SOURCE_DIR=${PROJECT_SOURCE_DIR}$<$<BOOL:${TABLETOP_SANITIZE}>:;LD_PRELOAD=${TABLETOP_PYTHON_PRELOAD};ASAN_OPTIONS=detect_leaks=0:intercept_tls_get_addr=0>")
 endfunction()

@@ -42,7 +42,12 @@ grep -qxF "$out" "$source_dir/docs/library.md" || { echo "FAIL: docs/library.md 
 # it runs a shipped scenario from the installed data.
 module=$(find "$prefix" -name 'tabletop*.so' -path '*python3*' | head -1)
 if [ -n "$module" ]; then
-  out=$(PYTHONPATH=$(dirname "$module") /usr/bin/python3 -c "import tabletop; \
+  # A sanitized module needs the sanitizer's runtime loaded first
+  # (TABLETOP_PYTHON_PRELOAD, set by tests/CMakeLists.txt in such a build).
+  preload=()
+  [ -n "${TABLETOP_PYTHON_PRELOAD:-}" ] \
+    && preload=(env "LD_PRELOAD=$TABLETOP_PYTHON_PRELOAD" "ASAN_OPTIONS=detect_leaks=0:intercept_tls_get_addr=0")
+  out=$(PYTHONPATH=$(dirname "$module") "${preload[@]}" /usr/bin/python3 -c "import tabletop; \
 r = tabletop.run('$prefix/share/tabletop/scenarios/example1_single_cube.json'); print(r['state_hash'], r['complete'])")
   echo "python: $out"
   grep -q " True$" <<< "$out" || { echo "FAIL: the installed Python module did not run example 1"; exit 1; }
