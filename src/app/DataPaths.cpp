@@ -1,21 +1,18 @@
 #include "app/DataPaths.h"
 
-#include <cstdlib>
 #include <filesystem>
 
 #include <LinearMath/btScalar.h>
 
+#include "scenario/ShippedScenes.h"
+
 namespace tabletop {
 
 std::string dataRoot() {
-  if (const char* dir = std::getenv("TABLETOP_DATA_DIR"); dir && *dir) return dir;
   std::error_code ec;
   const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (!ec) {
-    const std::filesystem::path installed = exe.parent_path().parent_path() / "share" / "tabletop";
-    if (std::filesystem::is_directory(installed / "scenarios", ec)) return installed.string();
-  }
-  return TABLETOP_SOURCE_DIR;
+  const std::string installed = ec ? "" : (exe.parent_path().parent_path() / "share" / "tabletop").string();
+  return dataFolder(installed, TABLETOP_SOURCE_DIR);
 }
 
 std::string shippedScenarios() { return (std::filesystem::path(dataRoot()) / "scenarios").string(); }

@@ -8,10 +8,11 @@ namespace tabletop {
 /// front), found from the program, never from the current folder: the
 /// folder TABLETOP_DATA_DIR names if set; else, for an installed program,
 /// PREFIX/share/tabletop beside its bin/; else the source tree it was built
-/// from. Each holds scenarios/ and data/.
+/// from (dataFolder, scenario/ShippedScenes.h). Each holds scenarios/ and
+/// data/.
 std::string dataRoot();
 
-/// dataRoot()/scenarios
+/// dataRoot()/scenarios, where the shipped scenes are found by name.
 std::string shippedScenarios();
 
 /// dataRoot()/data/tolerance_front.json, which run --tolerance reads.

@@ -16,6 +16,7 @@
 #include "io/AtomicFile.h"
 #include "scenario/ScenarioError.h"
 #include "scenario/ScenarioLoader.h"
+#include "scenario/ShippedScenes.h"
 #include "sim/ResultFormat.h"
 #include "sim/SceneBuilder.h"
 #include "sim/ScriptRunner.h"
@@ -70,8 +71,9 @@ void addRunOptions(CLI::App& command, RunOptions& options, bool withMode) {
 
 Scenario loadScenario(const ScenarioSource& source, const RunOptions& options,
                       std::vector<std::string>* choiceLines) {
-  Scenario scenario = source.text ? ScenarioLoader::loadText(*source.text, source.name)
-                                  : ScenarioLoader::loadFile(source.name);
+  Scenario scenario =
+      source.text ? ScenarioLoader::loadText(*source.text, source.name)
+                  : ScenarioLoader::loadFile(sceneFile(source.name, shippedScenarios(), "tabletop list"));
   Settings& settings = scenario.settings;
   if (options.tolerance) {
     const std::string front = options.frontFile.empty() ? shippedFront() : options.frontFile;

@@ -24,9 +24,10 @@ enum ExitStatus : int {
   kExitInterrupted = 130,  ///< stopped by Ctrl-C (SIGINT) or SIGTERM; outputs completed so far kept
 };
 
-/// A scenario to run: a file, or a text built into the executable.
+/// A scenario to run: a file, a shipped scene's name, or a text built into
+/// the executable.
 struct ScenarioSource {
-  std::string name;  ///< the path, or the built-in scenario's file name
+  std::string name;  ///< the path or name as given, or the built-in scenario's file name
   std::optional<std::string> text;
 };
 
@@ -50,11 +51,12 @@ struct RunOptions {
 /// `withMode`, also --mode.
 void addRunOptions(CLI::App& command, RunOptions& options, bool withMode = true);
 
-/// Reads a scenario and resolves its settings once, into scenario.settings,
-/// which every mode then reads: the file's, then --tolerance's choice (what
-/// it chose and why, a line each, goes to `choiceLines` if given), then
-/// --timestep, --iterations, --integrator and --duration. Throws
-/// ScenarioError, also for a bad front file.
+/// Reads a scenario (a file, else the shipped scene of that name: sceneFile,
+/// scenario/ShippedScenes.h) and resolves its settings once, into
+/// scenario.settings, which every mode then reads: the file's, then
+/// --tolerance's choice (what it chose and why, a line each, goes to
+/// `choiceLines` if given), then --timestep, --iterations, --integrator and
+/// --duration. Throws ScenarioError, also for a bad front file.
 Scenario loadScenario(const ScenarioSource& source, const RunOptions& options,
                       std::vector<std::string>* choiceLines = nullptr);
 

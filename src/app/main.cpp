@@ -9,6 +9,7 @@
 #include "app/BenchCommand.h"
 #include "app/CompareCommand.h"
 #include "app/DataPaths.h"
+#include "app/ListCommand.h"
 #include "app/OptionChecks.h"
 #include "app/PlainHelp.h"
 #include "app/RenderCommand.h"
@@ -26,7 +27,7 @@ CLI::App* addScenarioCommand(CLI::App& app, const std::string& name, const std::
   command
       ->add_option_function<std::string>(
           "SCENARIO", [&run](const std::string& file) { run.scenarios.push_back({file, std::nullopt}); },
-          "Scenario file (JSON), a pipe, or - for standard input")
+          "Scenario file (JSON), a pipe, - for standard input, or a shipped scene's name (tabletop list)")
       ->required();
   tabletop::addRunOptions(*command, run, withMode);
   return command;
@@ -49,11 +50,20 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", versionLine(), "Print the version, the Bullet build (float or double) and where the shipped files are, then exit");
   int status = kExitOk;
 
+  ListOptions list;
+  CLI::App* listCommand = app.add_subcommand(
+      "list", "List the shipped scenes: the names run, compare, render and view take from any folder");
+  addListOptions(*listCommand, list);
+  listCommand->callback([&] { status = listScenes(list, std::cout, std::cerr); });
+
   RunOptions run;
   std::vector<std::string> files;
   CLI::App* runCommand = app.add_subcommand(
       "run", "Run scenario files headless and print each entity's final state and the events");
-  runCommand->add_option("SCENARIO", files, "Scenario files (JSON), pipes, or - for standard input")->required();
+  runCommand
+      ->add_option("SCENARIO", files,
+                   "Scenario files (JSON), pipes, - for standard input, or shipped scenes' names (tabletop list)")
+      ->required();
   addRunOptions(*runCommand, run);
   runCommand->add_option("--out", run.outFile,
                          "Write the output to FILE instead of standard output (whole or not at all)");

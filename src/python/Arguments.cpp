@@ -1,11 +1,15 @@
 #include "python/Arguments.h"
 
+#include <dlfcn.h>
+
+#include <filesystem>
 #include <string>
 
 #include "core/Integrator.h"
 #include "core/Text.h"
 #include "scenario/ScenarioError.h"
 #include "scenario/ScenarioLoader.h"
+#include "scenario/ShippedScenes.h"
 
 namespace tabletop::python {
 
@@ -72,7 +76,21 @@ Scenario loadPath(const std::string& path) {
   if (path.find('\0') != std::string::npos) {
     throw py::value_error("path: expected a file's path, got one holding a NUL character");
   }
-  return ScenarioLoader::loadFile(path);
+  return ScenarioLoader::loadFile(sceneFile(path, shippedScenes(), "tabletop.shipped_scenes()"));
+}
+
+std::string shippedScenes() {
+  // The module's own file, found from one of its functions: installed, it
+  // is TABLETOP_PYTHON_INSTALL_DIR under the prefix, and the data
+  // TABLETOP_DATA_FROM_MODULE from there (python/CMakeLists.txt).
+  Dl_info info{};
+  std::string installed;
+  if (::dladdr(reinterpret_cast<void*>(&shippedScenes), &info) != 0 && info.dli_fname) {
+    installed = (std::filesystem::path(info.dli_fname).parent_path() / TABLETOP_DATA_FROM_MODULE)
+                    .lexically_normal()
+                    .string();
+  }
+  return dataFolder(installed, TABLETOP_SOURCE_DIR) + "/scenarios";
 }
 
 // A scene built from Python objects: the same format as a file, checked by

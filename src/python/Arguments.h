@@ -44,12 +44,20 @@ struct Overrides {
 /// ScenarioError at /settings).
 Scenario resolved(Scenario scenario, const Overrides& overrides);
 
-/// A Scenario, a file's path (str or os.PathLike), or a scene's objects
-/// (checked as a file is, located in that object written as JSON).
+/// A Scenario, a file's path or a shipped scene's name (str or
+/// os.PathLike), or a scene's objects (checked as a file is, located in
+/// that object written as JSON).
 Scenario scenarioOf(const py::object& scene);
-/// Reads and checks the file at `path` (a path holding a NUL is refused:
-/// the file system would read a shorter one).
+/// Reads and checks the file at `path`, else the shipped scene of that
+/// name (sceneFile, scenario/ShippedScenes.h). A path holding a NUL is
+/// refused: the file system would read a shorter one.
 Scenario loadPath(const std::string& path);
+
+/// Where the module finds the shipped scenes: dataFolder's rule
+/// (TABLETOP_DATA_DIR; else PREFIX/share/tabletop when the module is
+/// installed under PREFIX; else the source tree it was built from), then
+/// scenarios/.
+std::string shippedScenes();
 
 /// A JSON value as Python objects (dicts, lists, numbers, strings).
 py::object fromJson(const nlohmann::json& value);

@@ -13,7 +13,7 @@
 /// bindX here and is called there.
 namespace tabletop::python {
 
-/// Scenario, load, scene, run, and the module's exceptions.
+/// Scenario, load, scene, run, shipped_scenes, and the module's exceptions.
 void bindScenarios(pybind11::module_& m);
 /// Simulation.
 void bindSimulation(pybind11::module_& m);

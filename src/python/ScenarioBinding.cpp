@@ -1,6 +1,7 @@
-// tabletop.Scenario, load, scene and run, and the exceptions every part of
-// the module raises: a scenario refused (with the command line's located
-// lines), a run that diverged, and a Python error already set (Ctrl-C).
+// tabletop.Scenario, load, scene, run and shipped_scenes, and the
+// exceptions every part of the module raises: a scenario refused (with the
+// command line's located lines), a run that diverged, and a Python error
+// already set (Ctrl-C).
 #include <memory>
 #include <optional>
 #include <string>
@@ -11,6 +12,7 @@
 #include "python/Bindings.h"
 #include "python/SignalCheck.h"
 #include "scenario/ScenarioError.h"
+#include "scenario/ShippedScenes.h"
 #include "sim/DivergenceGuard.h"
 #include "sim/ResultFormat.h"
 #include "sim/SceneBuilder.h"
@@ -39,6 +41,20 @@ py::object run(const py::object& scene, const std::string& mode, std::optional<d
     result = runScript(scenario, scenario.settings, *simulation, [&check](const Simulation&) { check(); });
   }
   return fromJson(toJson(result));
+}
+
+// shipped_scenes(): the list `tabletop list --json` prints.
+py::list shippedSceneList() {
+  py::list scenes;
+  for (const ShippedScene& s : listShippedScenes(shippedScenes())) {
+    py::dict scene;
+    scene["name"] = s.name;
+    scene["description"] = s.description;
+    scene["file"] = s.file;
+    scene["loads"] = s.loads;
+    scenes.append(scene);
+  }
+  return scenes;
 }
 
 }  // namespace
@@ -74,15 +90,19 @@ void bindScenarios(py::module_& m) {
       .def_property_readonly("entities", &entityNames, "The entities' names, in the order every array gives them.");
 
   m.def("load", &loadPath, py::arg("path"),
-        "Reads and checks a scenario file (JSON with comments; the format of scenarios/README.md). Raises "
-        "ScenarioError with every problem located.");
+        "Reads and checks a scenario file (JSON with comments; the format of scenarios/README.md), or, where no "
+        "file has that path, the shipped scene of that name ('example2_two_cubes', 'hard/pyramid_55'; "
+        "shipped_scenes() names them). Raises ScenarioError with every problem located.");
+  m.def("shipped_scenes", &shippedSceneList,
+        "The scenes shipped with tabletop, as `tabletop list --json` gives them: a dict each, with the name load, "
+        "run and Simulation take from any folder, its description, its file, and whether it loads.");
   m.def(
       "scene", [](const py::object& object) { return scenarioOf(object); }, py::arg("scene"),
       "Builds a scenario from Python objects (dicts, lists, numbers, strings) in the scenario file's format, "
       "checked as a file is; problems are located in that object written as JSON.");
   m.def("run", &run, py::arg("scene"), py::kw_only(), py::arg("mode") = "bullet", py::arg("timestep") = py::none(),
         py::arg("iterations") = py::none(), py::arg("integrator") = py::none(), py::arg("duration") = py::none(),
-        "Runs a scenario (a Scenario, a file's path, or a scene's objects) to its end and returns its run as "
+        "Runs a scenario (a Scenario, a file's path or a shipped scene's name, or a scene's objects) to its end and returns its run as "
         "`tabletop run --json` prints it (one entry of the document's runs): entities, events, state_hash, "
         "complete. A run that diverges returns complete False with its failure. The keyword settings override the "
         "scenario's, as run's options do, within the same limits. The GIL is released while it runs; Ctrl-C stops "

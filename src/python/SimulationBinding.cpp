@@ -156,7 +156,8 @@ void bindSimulation(py::module_& m) {
       &initialise, py::is_method(simulation), py::arg("scene"), py::kw_only(),
       py::arg("mode") = "bullet", py::arg("script") = true, py::arg("timestep") = py::none(),
       py::arg("iterations") = py::none(), py::arg("integrator") = py::none(),
-      "Builds the scene in mode 'bullet', 'compat' or 'rules'. With script True its script is carried out as time "
+      "Builds the scene (a Scenario, a file's path or a shipped scene's name, or a scene's objects) in mode "
+      "'bullet', 'compat' or 'rules'. With script True its script is carried out as time "
       "passes; with False only the pushes given from Python happen. timestep, iterations and integrator override "
       "the scenario's, within its limits. A second __init__ on a live Simulation raises RuntimeError.");
   simulation

@@ -5,13 +5,13 @@
 #include "python/SweepBinding.h"
 
 #include <algorithm>
-#include <cstdlib>
 #include <string>
 #include <vector>
 
 #include <pybind11/eval.h>
 #include <pybind11/stl.h>
 
+#include "python/Arguments.h"
 #include "scenario/ScenarioError.h"
 #include "sweep/SweepPool.h"
 
@@ -20,15 +20,10 @@ namespace py = pybind11;
 namespace tabletop {
 namespace {
 
+using python::shippedScenes;
+
 // The most runs one cluster task holds.
 constexpr std::size_t kRunsPerTask = 32;
-
-// Where shipped scenes are found: TABLETOP_DATA_DIR's scenarios/ if set,
-// else the source tree the module was built from.
-std::string shippedScenes() {
-  const char* data = std::getenv("TABLETOP_DATA_DIR");
-  return (data && *data ? std::string(data) : std::string(TABLETOP_SOURCE_DIR)) + "/scenarios";
-}
 
 // A spec given as a path, a JSON text or a dict.
 SweepSpec specFrom(const py::object& spec) {

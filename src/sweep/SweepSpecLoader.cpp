@@ -8,6 +8,7 @@
 #include "scenario/JsonText.h"
 #include "scenario/ScenarioError.h"
 #include "scenario/ScenarioLoader.h"
+#include "scenario/ShippedScenes.h"
 #include "scenario/ValueRanges.h"
 #include "sweep/SpecChecker.h"
 #include "sweep/SweepSpec.h"
@@ -40,19 +41,11 @@ json baseScene(const json& j, const std::string& at, const std::string& specFile
   if (endsWith(s, ".json")) {
     const std::size_t slash = specFile.rfind('/');
     source = s.front() == '/' || slash == std::string::npos ? s : specFile.substr(0, slash + 1) + s;
+  } else if (sceneNameProblem(s).empty()) {
+    source = shippedScenePath(shipped, s);
   } else {
-    for (char ch : s) {
-      if (!(std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-' || ch == '/')) {
-        c.fail(at,
-               "expected a shipped scene's name (letters, digits, _ - /) or a file ending in .json, got " + shown(j));
-        return json();
-      }
-    }
-    if (s.front() == '/' || s.find("//") != std::string::npos) {
-      c.fail(at, "expected a shipped scene's name, got " + shown(j));
-      return json();
-    }
-    source = shipped + "/" + s + ".json";
+    c.fail(at, "expected a shipped scene's name (letters, digits, _ - /) or a file ending in .json, got " + shown(j));
+    return json();
   }
   const std::string text = readTextFile(source, ScenarioLoader::kMaxFileBytes);
   ScenarioLoader::loadText(text, source);  // its own problems, located in its own file

@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # Installs this build into a fresh prefix and uses it as a user would:
 # the installed tabletop, run from another folder, finds its own files
-# under PREFIX/share/tabletop (not the source tree); and the consumer
-# example (examples/consumer) is configured against the installed CMake
-# package, built, and run, its cube sliding the closed-form 0.1019 m; the
-# installed Python module, if built, runs a scenario from the prefix.
+# under PREFIX/share/tabletop (not the source tree), shipped scenes by
+# name among them; and the consumer example (examples/consumer) is
+# configured against the installed CMake package, built, and run, its cube
+# sliding the closed-form 0.1019 m; the installed Python module, if built,
+# runs a scenario from the prefix and finds a shipped scene's name there.
 # Usage: check.sh SOURCE_DIR BUILD_DIR [CMAKE_BUILD_TYPE]
 set -euo pipefail
 source_dir=$1 build_dir=$2 build_type=${3:-Release}
@@ -29,6 +30,12 @@ grep -qxF "data: $prefix/share/tabletop" <<< "$version" \
 env -u TABLETOP_DATA_DIR "$prefix/bin/tabletop" bench --cases free_flight --rates 60 --iterations 10 --repeats 1 \
   --modes bullet > bench.txt
 grep -q "^free_flight" bench.txt || { echo "FAIL: the installed bench found no shipped scene"; cat bench.txt; exit 1; }
+# A shipped scene by name, from the prefix's data.
+env -u TABLETOP_DATA_DIR "$prefix/bin/tabletop" list | grep -q "^hard/tall_stack_10 " \
+  || { echo "FAIL: the installed list does not name hard/tall_stack_10"; exit 1; }
+env -u TABLETOP_DATA_DIR "$prefix/bin/tabletop" run example1_single_cube | head -1 \
+  | grep -qF "($prefix/share/tabletop/scenarios/example1_single_cube.json)" \
+  || { echo "FAIL: the installed run did not read example1_single_cube from $prefix/share/tabletop"; exit 1; }
 
 cmake -S "$source_dir/examples/consumer" -B consumer -DCMAKE_PREFIX_PATH="$prefix" \
   -DCMAKE_BUILD_TYPE="$build_type" > consumer-configure.log \
@@ -39,7 +46,7 @@ echo "$out"
 grep -q "slid 0.1019 m (closed form 0.1019 m)" <<< "$out" || { echo "FAIL: the consumer's cube did not slide 0.1019 m"; exit 1; }
 grep -qxF "$out" "$source_dir/docs/library.md" || { echo "FAIL: docs/library.md does not show the consumer's output as it runs"; exit 1; }
 # The Python module, where the build made one: imported from the prefix,
-# it runs a shipped scenario from the installed data.
+# it runs a shipped scenario from the installed data, by path and by name.
 module=$(find "$prefix" -name 'tabletop*.so' -path '*python3*' | head -1)
 if [ -n "$module" ]; then
   # A sanitized module needs the sanitizer's runtime loaded first
@@ -51,5 +58,9 @@ if [ -n "$module" ]; then
 r = tabletop.run('$prefix/share/tabletop/scenarios/example1_single_cube.json'); print(r['state_hash'], r['complete'])")
   echo "python: $out"
   grep -q " True$" <<< "$out" || { echo "FAIL: the installed Python module did not run example 1"; exit 1; }
+  file=$(env -u TABLETOP_DATA_DIR PYTHONPATH=$(dirname "$module") /usr/bin/python3 -c "import tabletop; \
+print(tabletop.load('example1_single_cube').file)")
+  [ "$file" = "$prefix/share/tabletop/scenarios/example1_single_cube.json" ] \
+    || { echo "FAIL: the installed Python module read example1_single_cube from $file"; exit 1; }
 fi
 echo "1 passed, 0 failed"

@@ -137,15 +137,16 @@ def test_a_scene_built_from_objects_runs_like_its_file(tmp_path):
 
 
 def test_every_function_has_a_docstring():
-    for name in ["load", "scene", "run", "Simulation", "Scenario", "ScenarioError", "DivergenceError"]:
+    for name in ["load", "scene", "run", "shipped_scenes", "Simulation", "Scenario", "ScenarioError",
+                 "DivergenceError"]:
         assert getattr(tabletop, name).__doc__, name
     for name in ["step", "run_to_end", "push", "rotate", "render", "result", "positions", "orientations",
                  "velocities", "angular_velocities", "names", "time", "steps", "at_rest", "finished"]:
         assert getattr(tabletop.Simulation, name).__doc__, name
 
 
-def test_the_library_pages_session_runs_as_shown(monkeypatch):
-    """docs/library.md's Python session is a doctest: its outputs are what the module prints."""
+def test_the_library_pages_session_runs_as_shown(monkeypatch, tmp_path):
+    """docs/library.md's Python session is a doctest: its outputs are what the module prints, from any folder."""
     import doctest
     import re
 
@@ -153,7 +154,7 @@ def test_the_library_pages_session_runs_as_shown(monkeypatch):
     page = (SOURCE / "docs" / "library.md").read_text()
     blocks = re.findall(r"```python\n(.*?)```", page, re.S)
     assert blocks, "docs/library.md shows no Python session"
-    monkeypatch.chdir(SOURCE)
+    monkeypatch.chdir(tmp_path)
     parser = doctest.DocTestParser()
     runner = doctest.DocTestRunner(optionflags=doctest.NORMALIZE_WHITESPACE)
     for text in blocks:
