@@ -58,7 +58,7 @@ if [ -n "$module" ]; then
 r = tabletop.run('$prefix/share/tabletop/scenarios/example1_single_cube.json'); print(r['state_hash'], r['complete'])")
   echo "python: $out"
   grep -q " True$" <<< "$out" || { echo "FAIL: the installed Python module did not run example 1"; exit 1; }
-  file=$(env -u TABLETOP_DATA_DIR PYTHONPATH=$(dirname "$module") /usr/bin/python3 -c "import tabletop; \
+  file=$(env -u TABLETOP_DATA_DIR PYTHONPATH=$(dirname "$module") "${preload[@]}" /usr/bin/python3 -c "import tabletop; \
 print(tabletop.load('example1_single_cube').file)")
   [ "$file" = "$prefix/share/tabletop/scenarios/example1_single_cube.json" ] \
     || { echo "FAIL: the installed Python module read example1_single_cube from $file"; exit 1; }
