@@ -168,8 +168,8 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   double stepLength_ = 0.0;  // the step being taken, s
   std::vector<Struck> struck_;
   bool solved_ = false;      // a solve has run: contacts carry their loads
-  std::vector<std::pair<btManifoldPoint*, btScalar>> heldGaps_;
-  std::vector<HeldPlace> heldPlaces_;
+  HeldGaps::Storage heldGaps_;
+  HeldPlaces::Storage heldPlaces_;
   PointBoxes pointBoxes_;  // the boxes the part's points lie on (FaceExits)
   ImpactScan::Storage impactStorage_;  // the part's ImpactScan's
   BodySet stopped_;  // bodies a closing point stopped in the last solve

@@ -13,50 +13,45 @@ namespace tabletop {
 /// and puts back as the solve ends: each a guard, so that nothing set is
 /// left behind on any path (docs/step.md, "The solve").
 
-/// Points whose gaps (distances) were changed for a solve, with their true
-/// gaps: put back last first, so a point held twice gets its true gap.
-class HeldGaps {
+/// Values of contact points changed for one solve, each with what it was:
+/// put back last first as the guard ends, so a point held twice gets its
+/// first value back. `PutBack` writes one held value back.
+template <class Held, class PutBack>
+class HeldForSolve {
  public:
-  using Storage = std::vector<std::pair<btManifoldPoint*, btScalar>>;
-  explicit HeldGaps(Storage& held) : held_(held) { held_.clear(); }
-  ~HeldGaps() {
-    for (auto h = held_.rbegin(); h != held_.rend(); ++h) h->first->setDistance(h->second);
+  using Storage = std::vector<Held>;
+  explicit HeldForSolve(Storage& held) : held_(held) { held_.clear(); }
+  ~HeldForSolve() {
+    for (auto h = held_.rbegin(); h != held_.rend(); ++h) PutBack()(*h);
     held_.clear();
   }
-  HeldGaps(const HeldGaps&) = delete;
-  HeldGaps& operator=(const HeldGaps&) = delete;
+  HeldForSolve(const HeldForSolve&) = delete;
+  HeldForSolve& operator=(const HeldForSolve&) = delete;
   Storage& storage() { return held_; }
 
  private:
   Storage& held_;
 };
 
-/// A point moved for a solve, with its world places before.
+/// A point whose gap (distance) was changed for a solve, with its true gap.
+struct PutBackGap {
+  void operator()(const std::pair<btManifoldPoint*, btScalar>& held) const { held.first->setDistance(held.second); }
+};
+using HeldGaps = HeldForSolve<std::pair<btManifoldPoint*, btScalar>, PutBackGap>;
+
+/// A point moved for a solve (FaceExits.h's levers), with its world places
+/// before.
 struct HeldPlace {
   btManifoldPoint* point;
   btVector3 onA, onB;
 };
-
-/// Points whose world places were moved for a solve (FaceExits.h's
-/// levers): put back last first.
-class HeldPlaces {
- public:
-  using Storage = std::vector<HeldPlace>;
-  explicit HeldPlaces(Storage& held) : held_(held) { held_.clear(); }
-  ~HeldPlaces() {
-    for (auto h = held_.rbegin(); h != held_.rend(); ++h) {
-      h->point->m_positionWorldOnA = h->onA;
-      h->point->m_positionWorldOnB = h->onB;
-    }
-    held_.clear();
+struct PutBackPlace {
+  void operator()(const HeldPlace& held) const {
+    held.point->m_positionWorldOnA = held.onA;
+    held.point->m_positionWorldOnB = held.onB;
   }
-  HeldPlaces(const HeldPlaces&) = delete;
-  HeldPlaces& operator=(const HeldPlaces&) = delete;
-  Storage& storage() { return held_; }
-
- private:
-  Storage& held_;
 };
+using HeldPlaces = HeldForSolve<HeldPlace, PutBackPlace>;
 
 /// The impulses of every point of `dispatcher`, taken when `keep` is true
 /// and put back as the guard ends: a part that carries on what it was
