@@ -1,0 +1,87 @@
+#!/usr/bin/env python3
+"""Writes docs/tests.md's test times from a clean run of `.ci/run`.
+
+Between  <!-- times: begin -->  and  <!-- times: end -->  in docs/tests.md:
+for each build `.ci/run` tests (build: Release; build-asan: the sanitizers),
+the entries, the sum of their times and its share per label, from CTest's
+own record of the run (Testing/Temporary/CTestCostData.txt, the last time
+of each entry); and the wall time of the whole of `.ci/run`.
+Usage:
+    docs/make-test-times.py --run-ci     # clones HEAD, times .ci/run in it (about 40 minutes)
+    docs/make-test-times.py CLONE SECONDS  # a clone .ci/run has run in, and how long it took
+"""
+import os
+import pathlib
+import re
+import subprocess
+import sys
+import tempfile
+import time
+
+ROOT = pathlib.Path(__file__).resolve().parents[1]
+BUILDS = [("build", "Release"), ("build-asan", "AddressSanitizer and UBSan")]
+
+
+def replace_block(page, name, text):
+    """Puts `text` between the page's NAME: begin and NAME: end markers."""
+    path = ROOT / page
+    old = path.read_text()
+    pattern = re.compile(r"(<!-- %s: begin -->\n).*?(<!-- %s: end -->)" % (name, name), re.S)
+    if not pattern.search(old):
+        sys.exit(f"{page}: no {name} markers")
+    path.write_text(pattern.sub(lambda m: m.group(1) + text + m.group(2), old))
+
+
+def costs(build):
+    """Each entry's time in the last run, s, from CTest's cost data."""
+    out = {}
+    for line in (build / "Testing" / "Temporary" / "CTestCostData.txt").read_text().splitlines():
+        if line.startswith("---"):
+            break
+        parts = line.rsplit(" ", 2)
+        if len(parts) == 3:
+            out[parts[0]] = float(parts[2])
+    return out
+
+
+def labelled(build, label):
+    """The names of the entries that carry `label`."""
+    listed = subprocess.run(["ctest", "--test-dir", str(build), "-N", "-L", f"^{label}$"], capture_output=True,
+                            text=True, check=True).stdout
+    return set(re.findall(r"Test +#\d+: (\S+)", listed))
+
+
+def table(clone, seconds):
+    lines = ["| build | entries | their times added [min] | by label [min] |", "|---|---|---|---|"]
+    for name, what in BUILDS:
+        build = clone / name
+        cost = costs(build)
+        labels = subprocess.run(["ctest", "--test-dir", str(build), "--print-labels"], capture_output=True,
+                                text=True, check=True).stdout
+        labels = [l.strip() for l in labels.splitlines()[labels.splitlines().index("All Labels:") + 1:] if l.strip()]
+        shares = []
+        for label in labels:
+            total = sum(cost.get(t, 0.0) for t in labelled(build, label))
+            shares.append(f"{label} {total / 60:.1f}")
+        lines.append(f"| {what} | {len(cost)} | {sum(cost.values()) / 60:.1f} | {', '.join(shares)} |")
+    return ("\n".join(lines) + "\n\n" + f"The whole of `.ci/run` (both builds made from nothing, both suites at "
+            f"`-j2`, the fuzzer's build and its minute) took {seconds / 60:.1f} min of wall time on a machine of "
+            f"{os.cpu_count()} cores.\n")
+
+
+def main():
+    if sys.argv[1:] == ["--run-ci"]:
+        with tempfile.TemporaryDirectory() as tmp:
+            clone = pathlib.Path(tmp) / "clone"
+            subprocess.run(["git", "clone", "-q", str(ROOT), str(clone)], check=True)
+            start = time.monotonic()
+            subprocess.run(["bash", ".ci/run"], cwd=clone, check=True, stdout=subprocess.DEVNULL)
+            replace_block("docs/tests.md", "times", table(clone, time.monotonic() - start))
+    elif len(sys.argv) == 3:
+        replace_block("docs/tests.md", "times", table(pathlib.Path(sys.argv[1]), float(sys.argv[2])))
+    else:
+        sys.exit(__doc__)
+
+
+if __name__ == "__main__":
+    main()
