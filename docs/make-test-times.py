@@ -7,8 +7,9 @@ the entries, the sum of their times and its share per label, from CTest's
 own record of the run (Testing/Temporary/CTestCostData.txt, the last time
 of each entry); and the wall time of the whole of `.ci/run`.
 Usage:
-    docs/make-test-times.py --run-ci     # clones HEAD, times .ci/run in it (about 40 minutes)
-    docs/make-test-times.py CLONE SECONDS  # a clone .ci/run has run in, and how long it took
+    docs/make-test-times.py --run-ci   # clones HEAD, times .ci/run in it (about 40 minutes)
+    docs/make-test-times.py CLONE      # the entries of a clone .ci/run has run in, without the wall time
+On a failure of .ci/run its log is kept and its failing lines printed.
 """
 import os
 import pathlib
@@ -51,7 +52,7 @@ def labelled(build, label):
     return set(re.findall(r"Test +#\d+: (\S+)", listed))
 
 
-def table(clone, seconds):
+def table(clone, seconds=None):
     lines = ["| build | entries | their times added [min] | by label [min] |", "|---|---|---|---|"]
     for name, what in BUILDS:
         build = clone / name
@@ -64,9 +65,12 @@ def table(clone, seconds):
             total = sum(cost.get(t, 0.0) for t in labelled(build, label))
             shares.append(f"{label} {total / 60:.1f}")
         lines.append(f"| {what} | {len(cost)} | {sum(cost.values()) / 60:.1f} | {', '.join(shares)} |")
-    return ("\n".join(lines) + "\n\n" + f"The whole of `.ci/run` (both builds made from nothing, both suites at "
-            f"`-j2`, the fuzzer's build and its minute) took {seconds / 60:.1f} min of wall time on a machine of "
-            f"{os.cpu_count()} cores.\n")
+    text = "\n".join(lines) + "\n"
+    if seconds is not None:
+        text += (f"\nThe whole of `.ci/run` (both builds made from nothing, both suites at `-j2`, the fuzzer's "
+                 f"build and its minute) took {seconds / 60:.1f} min of wall time on a machine of "
+                 f"{os.cpu_count()} cores.\n")
+    return text
 
 
 def main():
@@ -75,10 +79,15 @@ def main():
             clone = pathlib.Path(tmp) / "clone"
             subprocess.run(["git", "clone", "-q", str(ROOT), str(clone)], check=True)
             start = time.monotonic()
-            subprocess.run(["bash", ".ci/run"], cwd=clone, check=True, stdout=subprocess.DEVNULL)
+            log = pathlib.Path(tempfile.gettempdir()) / "tabletop-ci-run.log"
+            with open(log, "w") as out:
+                run = subprocess.run(["bash", ".ci/run"], cwd=clone, stdout=out, stderr=subprocess.STDOUT)
+            if run.returncode != 0:
+                failed = [l for l in log.read_text(errors="replace").splitlines() if "***" in l or "FAILED" in l]
+                sys.exit("\n".join(failed[-20:]) + f"\n.ci/run failed (status {run.returncode}); its log: {log}")
             replace_block("docs/tests.md", "times", table(clone, time.monotonic() - start))
-    elif len(sys.argv) == 3:
-        replace_block("docs/tests.md", "times", table(pathlib.Path(sys.argv[1]), float(sys.argv[2])))
+    elif len(sys.argv) == 2:
+        replace_block("docs/tests.md", "times", table(pathlib.Path(sys.argv[1])))
     else:
         sys.exit(__doc__)
 
