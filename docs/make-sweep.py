@@ -30,20 +30,12 @@ import sys
 import tempfile
 import time
 
+from doc_blocks import replace_block
+
 ROOT = pathlib.Path(__file__).resolve().parents[1]
 SWEEPS = ROOT / "docs" / "sweeps"
 REPEATS = 3
 MAPS = ["example2_angle_friction", "example4_offset_mass"]
-
-
-def replace_block(page, name, text):
-    """Puts `text` between the page's NAME: begin and NAME: end markers."""
-    path = ROOT / page
-    old = path.read_text()
-    pattern = re.compile(r"(<!-- %s: begin -->\n).*?(<!-- %s: end -->)" % (name, name), re.S)
-    if not pattern.search(old):
-        sys.exit(f"{page}: no {name} markers")
-    path.write_text(pattern.sub(lambda m: m.group(1) + text + m.group(2), old))
 
 
 def cpu_of_children():
