@@ -22,7 +22,6 @@ Usage, after building (the Python module in build/python):
 import json
 import os
 import pathlib
-import re
 import resource
 import statistics
 import subprocess
