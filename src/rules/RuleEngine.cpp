@@ -15,8 +15,6 @@ constexpr int kMaxEventsPerStep = 100000;
 // to the drive's end, whatever the rounding of the path to it.
 constexpr double kEdgeTie = 1e-9;  // m
 
-bool isZero(const Vec3& v) { return v.x == 0.0 && v.y == 0.0 && v.z == 0.0; }
-
 }  // namespace
 
 RuleEngine::RuleEngine(std::string mode, const Settings& settings, const TableSpec& table,
@@ -147,29 +145,7 @@ RuleEngine::Next RuleEngine::nextEvent(double horizon) const {
       consider(make(Next::Kind::BaseEdge, std::max(t, 0.0), i));
     }
   }
-  // Strikes between bodies on a surface at the same level.
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!onSurface(i)) continue;
-    for (std::size_t j = i + 1; j < n; ++j) {
-      if (!onSurface(j)) continue;
-      const RuleBody& a = bodies_[i];
-      const RuleBody& b = bodies_[j];
-      if (a.bottom() >= b.top() - kLevelSlack || b.bottom() >= a.top() - kLevelSlack) continue;
-      const Vec3 vi = velocity(i), vj = velocity(j);
-      const Vec3 relative = vi - vj;
-      if (isZero(relative)) continue;
-      const std::optional<Hit> hit = finder_->firstHit(i, a, j, b, relative * best.t);
-      if (!hit) continue;
-      const double t = hit->fraction * best.t;
-      // The striker is the one running into the other faster.
-      const bool iStrikes = vi.dot(hit->normal) >= -vj.dot(hit->normal);
-      Next e = make(Next::Kind::Strike, t, iStrikes ? i : j);
-      e.other = iStrikes ? j : i;
-      e.normal = iStrikes ? hit->normal : hit->normal * -1.0;
-      consider(e);
-    }
-  }
-  return best;
+  return nextStrike(best);
 }
 
 void RuleEngine::advance(double dt) {

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "core/Settings.h"
@@ -121,6 +122,12 @@ class RuleEngine : public Simulation {
   bool moving(std::size_t i) const;
   Vec3 ownVelocity(std::size_t i) const;
   Next nextEvent(double horizon) const;
+  Next nextStrike(Next best) const;  // the first strike before best.t, else best
+  std::vector<Vec3> velocities() const;  // velocity(i) for every body at once
+  // Pairs (i < j, ascending) of a mover and a surface body that may meet
+  // within `horizon` s at velocities `v`.
+  std::vector<std::pair<std::size_t, std::size_t>> pairsNear(const std::vector<std::size_t>& movers,
+                                                             const std::vector<Vec3>& v, double horizon) const;
   void advance(double dt);
   void handle(const Next& next);
   void strike(std::size_t striker, std::size_t struck, const Vec3& normal);

@@ -6,6 +6,9 @@
 
 #include <cmath>
 #include <memory>
+#include <random>
+#include <string>
+#include <vector>
 #include <stdexcept>
 
 #include <gtest/gtest.h>
@@ -282,6 +285,77 @@ TEST(RuleEngine, ARiderSlidingOffItsBasePastTheTableEdgeDrops) {
   }
   EXPECT_TRUE(left);
 }
+
+
+// Report 3.7 down a row: N cubes in a line with seeded gaps, the first
+// pushed along the line. Each struck cube takes the rest of the step, so
+// the row closes up behind the first: x_0' = x_0 + step and
+// x_k' = max(x_k, x_{k-1}' + side). A second row a hair beside it is passed
+// by untouched. Checks the strike search over rows of every length, in
+// both axes and senses.
+struct RowCase {
+  int n;
+  DirectionDef face;
+  Vec3 along;    // the push's direction for that face at yaw 0
+  bool reversed; // bodies listed from the far end (the search's order)
+};
+
+class RuleEngineRow : public ::testing::TestWithParam<RowCase> {};
+
+TEST_P(RuleEngineRow, ClosesUpByTheTransferRule) {
+  const RowCase c = GetParam();
+  const double side = 0.002;
+  std::mt19937 random(static_cast<unsigned>(c.n));
+  std::uniform_real_distribution<double> gapOf(0.0, side);
+  std::vector<double> along;  // centres along the push, m
+  double x = -0.5;
+  for (int k = 0; k < c.n; ++k) {
+    along.push_back(x);
+    x += side + gapOf(random);
+  }
+  std::vector<RuleBody> bodies;
+  const Vec3 sideways{c.along.z, 0.0, c.along.x};
+  const auto slot = [&](int k, int which) {  // R_k at 0, S_k at 1
+    return static_cast<std::size_t>(2 * (c.reversed ? c.n - 1 - k : k) + which);
+  };
+  for (int j = 0; j < c.n; ++j) {
+    const int k = c.reversed ? c.n - 1 - j : j;
+    const Vec3 p = c.along * along[k];
+    bodies.push_back(cube("R" + std::to_string(k), side, p.x, p.z));
+    const Vec3 q = p + sideways * (side * 1.001);
+    bodies.push_back(cube("S" + std::to_string(k), side, q.x, q.z));
+  }
+  Settings s;
+  s.timestep = 1.0 / 60.0;
+  TableSpec table;
+  table.width = table.depth = 2.0;
+  RuleEngine e("rules", s, table, std::move(bodies), std::make_unique<ReportContactFinder>());
+  const double step = 0.5 * (along.back() - along.front());
+  push(e, "R0", c.face, step);
+  runToRest(e);
+  double expected = along[0] + step;
+  for (int k = 0; k < c.n; ++k) {
+    if (k > 0) expected = std::max(along[k], expected + side);
+    const Vec3 p = e.bodies()[slot(k, 0)].position;
+    EXPECT_NEAR(p.dot(c.along), expected, kExact) << "R" << k;
+    const Vec3 q = e.bodies()[slot(k, 1)].position;
+    EXPECT_NEAR(q.dot(c.along), along[k], kExact) << "S" << k << " moved";
+  }
+}
+
+std::string rowName(const ::testing::TestParamInfo<RowCase>& info) {
+  return std::to_string(info.param.n) + "_cubes_" + std::string(toString(info.param.face)) +
+         (info.param.reversed ? "_listed_from_the_far_end" : "");
+}
+
+INSTANTIATE_TEST_SUITE_P(Rows, RuleEngineRow,
+                         ::testing::Values(RowCase{2, DirectionDef::Left, {1, 0, 0}, false},
+                                           RowCase{7, DirectionDef::Right, {-1, 0, 0}, true},
+                                           RowCase{40, DirectionDef::Front, {0, 0, -1}, false},
+                                           RowCase{40, DirectionDef::Back, {0, 0, 1}, true},
+                                           RowCase{300, DirectionDef::Back, {0, 0, 1}, false},
+                                           RowCase{300, DirectionDef::Left, {1, 0, 0}, true}),
+                         rowName);
 
 }  // namespace
 }  // namespace tabletop::rules
