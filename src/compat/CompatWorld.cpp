@@ -124,4 +124,10 @@ std::vector<EntityState> CompatWorld::snapshot() const {
   return states;
 }
 
+WorkCount CompatWorld::work() const {
+  WorkCount w = world_->work();
+  w += engine_->work();
+  return w;
+}
+
 }  // namespace tabletop

@@ -41,6 +41,7 @@ class CompatWorld : public Simulation, private rules::ReleaseHandler {
   const std::vector<Event>& events() const override { return events_; }
   std::vector<Vec3> contactPoints() const override { return world_->contactPoints(); }
   SolverUse solverUse() const override { return world_->solverUse(); }
+  WorkCount work() const override;
 
  private:
   void release(std::size_t body, const Vec3& velocity) override;

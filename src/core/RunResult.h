@@ -7,6 +7,7 @@
 #include "core/EntityState.h"
 #include "core/Event.h"
 #include "core/Settings.h"
+#include "core/WorkCount.h"
 
 namespace tabletop {
 
@@ -24,6 +25,7 @@ struct RunResult {
   std::vector<Event> events;
   std::uint64_t stateHash = 0;
   SolverUse solverUse;  ///< how the contact islands were solved (full physics and compat)
+  WorkCount work;       ///< what the run did, counted (WorkCount.h)
   /// False when the run stopped early (it diverged); `failure` says why,
   /// and the states are those at the last step checked.
   bool complete = true;

@@ -10,6 +10,7 @@
 #include "core/EntityState.h"
 #include "core/Event.h"
 #include "core/Vec3.h"
+#include "core/WorkCount.h"
 
 namespace tabletop {
 
@@ -51,6 +52,8 @@ class Simulation {
   virtual std::vector<Vec3> contactPoints() const { return {}; }
   /// How the contact solver solved the islands so far (none in the rules).
   virtual SolverUse solverUse() const { return {}; }
+  /// The work done so far (WorkCount.h); ScriptPlayer bounds a run by it.
+  virtual WorkCount work() const { return {}; }
 };
 
 }  // namespace tabletop

@@ -358,4 +358,10 @@ int World::substeps() const {
   return parts < settings_.maxSubsteps ? static_cast<int>(std::ceil(parts)) : settings_.maxSubsteps;
 }
 
+WorkCount World::work() const {
+  WorkCount w = world_->work();
+  w += pipeline_.solver->work();
+  return w;
+}
+
 }  // namespace tabletop

@@ -97,6 +97,7 @@ class World : public Simulation {
   const std::vector<Event>& events() const override { return events_; }
   std::vector<Vec3> contactPoints() const override;
   SolverUse solverUse() const override { return pipeline_.solver->use(); }
+  WorkCount work() const override;
 
  private:
   // A support index that names no body.

@@ -163,8 +163,8 @@ void bindSimulation(py::module_& m) {
   simulation
       .def("step", &step, py::arg("n") = 1,
            "Advances n fixed timesteps (carrying out the script's actions as they fall due): n from 0 to 1e7, and "
-           "at most 1e11 solver work (n x max_substeps x iterations x entities), as a scenario's run. Raises "
-           "DivergenceError if a body leaves the scene's bounds; Ctrl-C stops it between steps.")
+           "at most 1e11 solver work (n x max_substeps x iterations x entities), as a scenario's run; while it "
+           "runs, at most 6e11 units of work (docs/limits.md), else ScenarioError. Raises DivergenceError if a body leaves the scene's bounds; Ctrl-C stops it between steps.")
       .def("run_to_end", &runToEnd,
            "Steps until the scenario's duration is reached, or its script is done and everything rests. Ctrl-C "
            "stops it between steps.")

@@ -15,7 +15,9 @@ SteppedScene::SteppedScene(Scenario scenario, SimulationMode mode, bool script)
   player_->runDue();
 }
 
+// Each call's work is bounded as a whole run's is (ScriptPlayer).
 void SteppedScene::step(long long n, const std::function<void()>& between) {
+  player_->restartWorkCount();
   for (long long k = 0; k < n; ++k) {
     player_->step();
     between();
@@ -23,6 +25,7 @@ void SteppedScene::step(long long n, const std::function<void()>& between) {
 }
 
 void SteppedScene::runToEnd(const std::function<void()>& between) {
+  player_->restartWorkCount();
   player_->runDue();
   while (!player_->finished()) {
     player_->step();

@@ -105,13 +105,17 @@ RuleEngine::Next RuleEngine::nextEvent(double horizon) const {
     return e;
   };
   const std::size_t n = bodies_.size();
+  std::size_t falling = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const Motion& m = motion_[i];
     const RuleBody& b = bodies_[i];
     if (m.phase == Phase::Driven || m.phase == Phase::Clearing) {
       consider(make(Next::Kind::DriveEnds, m.remaining / kDriveSpeed, i));
     }
-    if (m.phase == Phase::Falling) consider(landing(i));
+    if (m.phase == Phase::Falling) {
+      consider(landing(i));
+      ++falling;
+    }
     if (m.phase != Phase::Driven && m.phase != Phase::Clearing) continue;
     const Vec3 v = ownVelocity(i);
     // Report 3.4: the centre reaching an edge while moving out, whether
@@ -145,7 +149,9 @@ RuleEngine::Next RuleEngine::nextEvent(double horizon) const {
       consider(make(Next::Kind::BaseEdge, std::max(t, 0.0), i));
     }
   }
-  return nextStrike(best);
+  Next out = nextStrike(best);
+  out.checks += static_cast<double>(falling * n);  // each landing looks at every body
+  return out;
 }
 
 void RuleEngine::advance(double dt) {
@@ -324,6 +330,7 @@ void RuleEngine::step() {
       throw std::logic_error("rule engine: events keep causing each other at t = " + std::to_string(now_));
     }
     const Next next = nextEvent(left);
+    work_.ruleChecks += next.checks;
     advance(next.t);
     left -= next.t;
     now_ = time_ + (dt - left);

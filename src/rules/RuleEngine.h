@@ -84,6 +84,7 @@ class RuleEngine : public Simulation {
   bool allAtRest() const override;
   std::vector<EntityState> snapshot() const override;
   const std::vector<Event>& events() const override { return events_; }
+  WorkCount work() const override { return work_; }
 
  private:
   enum class Phase {
@@ -111,6 +112,7 @@ class RuleEngine : public Simulation {
     EntityPositionStatus edge = EntityPositionStatus::OnTable;  // TableEdge: which
     int on = kOnGround;  // Lands: kOnTable, kOnGround or a body index
     double top = 0.0;    // Lands: the height of that top now, m (to break ties)
+    double checks = 0.0; // bodies and pairs looked at to find it (WorkCount)
   };
 
   // Bodies whose vertical extents overlap by less than this do not meet
@@ -154,6 +156,7 @@ class RuleEngine : public Simulation {
   std::unique_ptr<ContactFinder> finder_;
   ReleaseHandler* release_;
   std::vector<Event> events_;
+  WorkCount work_;
   double time_ = 0.0;  // at the start of the current step
   double now_ = 0.0;   // within the current step, for events
   long steps_ = 0;

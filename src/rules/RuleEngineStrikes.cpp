@@ -140,7 +140,9 @@ RuleEngine::Next RuleEngine::nextStrike(Next best) const {
     best.other = iStrikes ? j : i;
     best.normal = iStrikes ? hit->normal : hit->normal * -1.0;
   };
-  for (const auto& [i, j] : pairsNear(movers, v, best.t)) check(i, j);
+  const auto pairs = pairsNear(movers, v, best.t);
+  for (const auto& [i, j] : pairs) check(i, j);
+  best.checks = static_cast<double>(n + pairs.size());
   return best;
 }
 

@@ -1,6 +1,7 @@
 #include "sim/ScriptPlayer.h"
 
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -21,7 +22,8 @@ ScriptPlayer::ScriptPlayer(const Scenario& scenario, const Settings& settings, S
       settings_(settings),
       simulation_(simulation),
       afterStep_(std::move(afterStep)),
-      guard_(scenario, settings, simulation.motions()) {}
+      guard_(scenario, settings, simulation.motions()),
+      workStart_(simulation.work().units()) {}
 
 bool ScriptPlayer::durationReached() const {
   return simulation_.time() >= settings_.duration - kTimeSlack;
@@ -110,9 +112,20 @@ std::optional<Arrow> ScriptPlayer::arrow() const {
 
 void ScriptPlayer::step() {
   simulation_.step();
+  checkWork();
   guard_.check(simulation_.motions(), simulation_.time());
   if (afterStep_) afterStep_(simulation_);
   runDue();
+}
+
+void ScriptPlayer::checkWork() const {
+  const double done = simulation_.work().units() - workStart_;
+  if (done <= workLimit_) return;
+  std::ostringstream message;
+  message << "expected at most " << workLimit_ << " units of work in one run (about 10 minutes of one core; "
+          << "docs/limits.md), stopped at t = " << simulation_.time() << " s after " << done
+          << ": shorten the duration, or use fewer bodies or iterations";
+  throw ScenarioError(scenario_, {{"/settings/duration", message.str()}});
 }
 
 bool ScriptPlayer::finished() const {

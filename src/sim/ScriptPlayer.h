@@ -33,7 +33,9 @@ class ScriptPlayer {
   /// that must wait.
   void runDue();
   /// One step of the simulation, then runDue(). Throws DivergenceError
-  /// when a body leaves the bounds of the scene (see DivergenceGuard).
+  /// when a body leaves the bounds of the scene (see DivergenceGuard), and
+  /// a ScenarioError located at the duration once the work since
+  /// restartWorkCount() passes WorkCount::kRunLimit.
   void step();
   /// True when no action is left and none is waiting.
   bool scriptDone() const { return next_ >= scenario_.script.size() && wait_ == Wait::None; }
@@ -42,6 +44,11 @@ class ScriptPlayer {
   bool finished() const;
   /// Steps until finished().
   void runToEnd();
+  /// Counts the work limit (WorkCount::kRunLimit) from now: a run's is
+  /// counted from its start, a stepping call's from the call.
+  void restartWorkCount() { workStart_ = simulation_.work().units(); }
+  /// The work limit, units; WorkCount::kRunLimit unless a test lowers it.
+  void setWorkLimit(double units) { workLimit_ = units; }
 
   /// Pushes now, as a scripted push does (the viewer's pushes come here).
   /// Throws std::invalid_argument when the mode cannot.
@@ -58,6 +65,7 @@ class ScriptPlayer {
   enum class Wait { None, Until, UntilRest };
   bool durationReached() const;
   bool waiting() const;
+  void checkWork() const;
   void carryOut(const Action& action);
   void applyPush(const Arrow& arrow, const PushMagnitude& magnitude);
 
@@ -72,6 +80,8 @@ class ScriptPlayer {
   std::optional<Arrow> lastArrow_;
   int pushes_ = 0;
   DivergenceGuard guard_;
+  double workStart_ = 0.0;  // units, when the work limit's count began
+  double workLimit_ = WorkCount::kRunLimit;
 };
 
 }  // namespace tabletop

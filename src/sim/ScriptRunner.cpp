@@ -38,6 +38,7 @@ RunResult outcomeNow(const Scenario& scenario, const Settings& settings, const S
   r.events = sim.events();
   r.stateHash = stateHash(r.entities);
   r.solverUse = sim.solverUse();
+  r.work = sim.work();
   return r;
 }
 

@@ -196,10 +196,12 @@ void ViewerSession::reset(bool playScript) {
 
 bool ViewerSession::stepOnce() {
   if (diverged_) return false;
+  // The viewer paces steps by the clock, so the work limit is each step's.
+  player_->restartWorkCount();
   try {
     player_->step();
     return true;
-  } catch (const DivergenceError& e) {
+  } catch (const std::runtime_error& e) {  // a DivergenceError, or the work limit's ScenarioError
     diverged_ = paused_ = true;
     budget_ = 0.0;
     message_ = std::string(e.what()) + "; R resets";

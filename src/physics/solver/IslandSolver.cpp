@@ -260,10 +260,13 @@ btScalar IslandSolver::solveGroupCacheFriendlyIterations(btCollisionObject** bod
                                                          btPersistentManifold** manifolds, int numManifolds,
                                                          btTypedConstraint** constraints, int numConstraints,
                                                          const btContactSolverInfo& info, btIDebugDraw* debugDrawer) {
+  const double rows = m_tmpSolverContactConstraintPool.size() + m_tmpSolverContactFrictionConstraintPool.size() +
+                      m_tmpSolverNonContactConstraintPool.size() + m_tmpSolverContactRollingFrictionConstraintPool.size();
   if (way_ == Way::LongSweeps) {
     if (counted_) ++use_.longSwept;
     btContactSolverInfo many = info;
     many.m_numIterations = std::max(info.m_numIterations, kLongSweeps);
+    work_.sweptRows += rows * many.m_numIterations;
     // The scene's own tolerance when it asks for a finer one (0: none).
     const btScalar tolerance2 = kLongSweepTolerance * kLongSweepTolerance;
     const btScalar own = info.m_leastSquaresResidualThreshold;
@@ -273,9 +276,11 @@ btScalar IslandSolver::solveGroupCacheFriendlyIterations(btCollisionObject** bod
   }
   if (way_ == Way::Sweep) {
     if (counted_) ++use_.swept;
+    work_.sweptRows += rows * info.m_numIterations;
     return btSequentialImpulseConstraintSolver::solveGroupCacheFriendlyIterations(
         bodies, numBodies, manifolds, numManifolds, constraints, numConstraints, info, debugDrawer);
   }
+  work_.pivotedRows += rows * rows;
   const int fallbacksBefore = getNumFallbacks();
   const btScalar result = btMLCPSolver::solveGroupCacheFriendlyIterations(
       bodies, numBodies, manifolds, numManifolds, constraints, numConstraints, info, debugDrawer);

@@ -6,6 +6,7 @@
 #include <BulletDynamics/MLCPSolvers/btMLCPSolver.h>
 
 #include "core/ContactSolver.h"
+#include "core/WorkCount.h"
 #include "physics/solver/ActiveSetSolver.h"
 #include "physics/contact/BodySet.h"
 
@@ -65,6 +66,8 @@ class IslandSolver : private IslandSolverParts, public btMLCPSolver {
 
   /// How the islands were solved since the solver was made.
   const SolverUse& use() const { return use_; }
+  /// Rows x sweeps and rows^2 pivoted so far (WorkCount.h).
+  const WorkCount& work() const { return work_; }
   /// While on, every group is swept and none is counted (the impacts'
   /// solve of every touching point, DynamicsWorld).
   void setSweepsOnly(bool on) { sweepsOnly_ = on; }
@@ -182,6 +185,7 @@ class IslandSolver : private IslandSolverParts, public btMLCPSolver {
   bool counted_ = false;    // the island being solved counts in use_
   bool guessed_ = false;    // the island just solved exactly was solved by the guess
   SolverUse use_;
+  WorkCount work_;
 };
 
 }  // namespace tabletop

@@ -7,6 +7,8 @@
 
 #include <btBulletDynamicsCommon.h>
 
+#include "core/WorkCount.h"
+
 #include "physics/contact/BodySet.h"
 #include "physics/solver/ContactIslands.h"
 #include "physics/collision/ContactResult.h"
@@ -69,10 +71,13 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   /// The pairs that bounced inside the last step, in time order: they may
   /// be apart again by its end, where the manifolds no longer show it.
   const std::vector<Struck>& struck() const { return struck_; }
+  /// Parts x bodies and parts x contact points so far (WorkCount.h).
+  const WorkCount& work() const { return work_; }
 
   /// Bullet's narrow phase, with the impulses of points a compound dropped
   /// carried over (CarriedImpulses).
   void performDiscreteCollisionDetection() override;
+  void countWork();  // this part's bodies and contact points, into work_
 
  private:
   // One part of the step: its place in the step and its length. `left` is
@@ -255,6 +260,7 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   BodySet resistedBodies_;                   // the bodies of resisted_
   const ResistedSlip* resistedSlip(const ContactKey& key) const;  // the contact's, or null
   ContactIslands islands_;   // replaces the island manager Bullet made
+  WorkCount work_;
   IslandSolver* islandSolver_;  // the constraint solver, if tabletop's (else null)
 };
 

@@ -88,6 +88,7 @@ void DynamicsWorld::stepPart(Part& part) {
   // pair table (collision/ContactDispatcher.h), then its islands.
   performDiscreteCollisionDetection();
   calculateSimulationIslands();
+  countWork();
   // 3-6. Stale points, restitution, events, the solve.
   getSolverInfo().m_timeStep = left;
   solveContacts(part, getSolverInfo());
@@ -106,6 +107,15 @@ void DynamicsWorld::startPart(Part& part) {
   if (smoothAcceleration_ > 0) saveStartVelocities();
   btDiscreteDynamicsWorld::applyGravity();
   applyRollingResistance(part);
+}
+
+void DynamicsWorld::countWork() {
+  work_.partBodies += getNumCollisionObjects();
+  work_.pairs += getBroadphase()->getOverlappingPairCache()->getNumOverlappingPairs();
+  btDispatcher* dispatcher = getDispatcher();
+  for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
+    work_.contactPoints += dispatcher->getManifoldByIndexInternal(m)->getNumContacts();
+  }
 }
 
 void DynamicsWorld::performDiscreteCollisionDetection() {
