@@ -38,3 +38,15 @@ def test_a_measured_table_is_what_bench_measures(name, tabletop_bin):
         shown = make_tables.shown((SOURCE / page).read_text(), name)
         assert make_tables.comparable(shown) == make_tables.comparable(block), \
             f"{page}: the {name} table is stale; run docs/make-tables.py"
+
+
+def test_the_work_weights_in_limits_md_are_the_headers():
+    """docs/limits.md's table of weights names those src/core/WorkCount.h weighs a run's work by."""
+    spec = importlib.util.spec_from_file_location("make_work", SOURCE / "docs" / "make-work.py")
+    make_work = importlib.util.module_from_spec(spec)
+    import sys
+    sys.path.insert(0, str(SOURCE / "docs"))
+    spec.loader.exec_module(make_work)
+    page = (SOURCE / "docs" / "limits.md").read_text()
+    for key, weight in zip(make_work.KEYS, make_work.weights_in_header()):
+        assert f"| {key} | {weight:g} |" in page, key
