@@ -1,7 +1,10 @@
 # What `cmake --install` puts under a prefix, in the usual layout:
-#   bin/                  tabletop and the four example programs
+#   bin/                  tabletop and the four example programs,
+#                         tabletop-example1_single_cube ...
 #   lib/                  the libraries (static)
-#   include/tabletop/     their headers, by layer (core/, physics/, sim/ ...)
+#   include/tabletop/     their headers, by layer (core/, physics/, sim/ ...),
+#                         included as <tabletop/sim/SceneBuilder.h> with
+#                         only include/ on the path
 #   share/tabletop/       the shipped scenarios, the tolerance front and
 #                         the JSON Schemas of scenarios and run --json,
 #                         found by the installed programs (app/DataPaths.h)
@@ -20,15 +23,22 @@ foreach(_name IN LISTS TABLETOP_EXPORTED)
   list(APPEND _tabletop_targets tabletop_${_name})
 endforeach()
 
+# Their include folder, PREFIX/include, comes with tabletop::core (every
+# library links it) and tabletop::io.
 install(TARGETS ${_tabletop_targets} EXPORT tabletopTargets
-  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
-  INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/tabletop)
+  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 
-# The headers keep the layer folders the sources include them by
-# ("physics/World.h"); the command line's are not a library's.
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/src/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/tabletop
-  FILES_MATCHING PATTERN "*.h"
-  PATTERN "app" EXCLUDE)
+# The libraries' headers, by layer, their includes of each other written
+# <tabletop/layer/Name.h> (cmake/TabletopInstallHeaders.cmake). The command
+# line's (app/) and the Python module's are not a library's.
+set(TABLETOP_HEADER_LAYERS
+  core io rules physics compat scenario sim scenes measure sweep draw image render headless viewer)
+install(CODE "
+  set(TABLETOP_SOURCE_DIR \"${PROJECT_SOURCE_DIR}\")
+  set(TABLETOP_STAGING_DIR \"${PROJECT_BINARY_DIR}/installed-headers\")
+  set(TABLETOP_INCLUDE_DIR \"${CMAKE_INSTALL_INCLUDEDIR}\")
+  set(TABLETOP_HEADER_LAYERS \"${TABLETOP_HEADER_LAYERS}\")
+  include(\"${PROJECT_SOURCE_DIR}/cmake/TabletopInstallHeaders.cmake\")")
 
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/scenarios/ DESTINATION ${CMAKE_INSTALL_DATADIR}/tabletop/scenarios)
 install(FILES ${PROJECT_SOURCE_DIR}/data/tolerance_front.json DESTINATION ${CMAKE_INSTALL_DATADIR}/tabletop/data)

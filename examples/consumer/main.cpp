@@ -4,9 +4,9 @@
 // 1, under Bullet's product) it should slide d = v0^2 / (2 mu g) = 1^2 / (2 * 0.5 * 9.81) = 0.1019 m.
 #include <cstdio>
 
-#include "core/Arrow.h"
-#include "scenario/Scenario.h"
-#include "sim/SceneBuilder.h"
+#include <tabletop/core/Arrow.h>
+#include <tabletop/scenario/Scenario.h>
+#include <tabletop/sim/SceneBuilder.h>
 
 int main() {
   using namespace tabletop;

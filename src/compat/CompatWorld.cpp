@@ -113,10 +113,11 @@ std::vector<EntityState> CompatWorld::snapshot() const {
   const std::vector<EntityState> physical = world_->snapshot();
   for (std::size_t i = 0; i < states.size(); ++i) {
     if (engine_->released(i)) {
-      // The rules said which edge; Bullet says when the drop is over.
+      // The rules said which edge; Bullet says when the drop is over (the
+      // status rule, EntityPositionStatus.h, with down = settled).
       const EntityPositionStatus edge = states[i].status;
       states[i] = physical[i];
-      states[i].status = settled_[i] ? EntityPositionStatus::FinishDropSimulation : edge;
+      states[i].status = comeDown(edge, settled_[i], false);
     } else {
       states[i].angularVelocity = {};
     }

@@ -10,6 +10,10 @@ EntityPositionStatus dropStatus(const Vec3& c, const TableEdges& t) {
   return EntityPositionStatus::OnTable;
 }
 
+bool overTableTop(const Vec3& c, double bottom, const TableEdges& t, double topHeight, double slack) {
+  return dropStatus(c, t) == EntityPositionStatus::OnTable && bottom >= topHeight - slack;
+}
+
 double edgeCrossing(const Vec3& p0, const Vec3& v0, const Vec3& p1, double dt, EntityPositionStatus drop,
                     const TableEdges& t) {
   // The coordinate across the edge, and the edge's place on it.

@@ -19,6 +19,12 @@ struct TableEdges {
 /// X > X_R, X < X_L, Z > Z_F, Z < Z_B.
 EntityPositionStatus dropStatus(const Vec3& centre, const TableEdges& table);
 
+/// True when a body with its centre at `centre` and its lowest point at
+/// `bottom` hangs over the table top: its centre within the edges (report
+/// 3.4) and its bottom no lower than the top, at `topHeight`, within
+/// `slack` metres. What falls from there lands on the table.
+bool overTableTop(const Vec3& centre, double bottom, const TableEdges& table, double topHeight, double slack);
+
 /// The share (0 to 1) of a step at which a centre crossed the edge that
 /// `drop` names, going from `p0` with velocity `v0` to `p1` with `v1` in
 /// `dt` seconds: where the quadratic through both places and the start's

@@ -75,6 +75,12 @@ class World : public Simulation {
   void placeKinematic(std::size_t i, const btVector3& centre, double yawDegrees);
   /// Makes kinematic entity `i` dynamic again, moving at `velocity` m/s.
   void makeDynamic(std::size_t i, const btVector3& velocity);
+  /// Looks at the scene as it stands, on the contacts the last collision
+  /// detection found (overlaps() finds them): what holds each entity up and
+  /// its status, on the table or never on it. Bookkeeping only, so a
+  /// snapshot before the first step shows them; the first step(), push()
+  /// or rotate() looks again.
+  void look() { observe(false); }
   /// True once entity `i` has been slow for the rest window (see observe()).
   bool atRest(std::size_t i) const { return trackers_.at(i).atRest; }
 
@@ -133,6 +139,9 @@ class World : public Simulation {
   void observeSupport(std::size_t i, bool emit);
   void observeEdge(std::size_t i, bool emit);
   void observeRest(std::size_t i, bool emit);
+  /// What holds entity `i` up after the last look, followed down through
+  /// the entities under it: the table, the ground, or nothing.
+  Support::Kind heldBy(std::size_t i) const;
   /// When, inside the step just taken, entity `shape` falling freely from
   /// its start (tracker) reached the height at which it rests flat on
   /// `support` (a user index): a landing's own time, not the step's end.

@@ -16,6 +16,9 @@ namespace {
 // so two cubes sliding together do not flicker in and out of contact.
 constexpr double kTouchDistance = 1e-4;  // m
 constexpr double kApartDistance = 1e-3;  // m
+// A body in the air whose bottom is this close under the table top still
+// hangs over it (startStatus).
+constexpr double kOverTopSlack = 1e-6;  // m
 // A contact supports an entity when its normal points up within 60 degrees.
 constexpr double kSupportNormalY = 0.5;
 // An entity's support stays what it was while that still pushes it up with
@@ -76,6 +79,13 @@ void World::observe(bool emit) {
   gatherContacts();
   observeTouching(emit);
   findSupports();
+  // The first look: where each entity starts, on the table or never on it.
+  for (std::size_t i = 0; !emit && i < entities_.size(); ++i) {
+    Shape& shape = *entities_[i];
+    const btVector3 c = shape.position();
+    const bool over = overTableTop(toVec3(c), c.y() - shape.below(), table_.edges(), table_.topHeight(), kOverTopSlack);
+    shape.setStatus(startStatus(heldBy(i), over));
+  }
   for (std::size_t i = 0; i < entities_.size(); ++i) {
     observeSupport(i, emit);
     observeEdge(i, emit);
@@ -138,6 +148,13 @@ void World::gatherContacts() {
     }
   }
   contacts_.resize(merged);
+}
+
+Support::Kind World::heldBy(std::size_t i) const {
+  // A loop of entities holding each other up holds nothing up.
+  int s = supports_[i];
+  for (std::size_t hops = 0; s >= 0 && hops < entities_.size(); ++hops) s = supports_[static_cast<std::size_t>(s)];
+  return s == kNoSupport || s >= 0 ? Support::Kind::None : participant(s).kind();
 }
 
 // Which entity pairs touch: a pair starts touching within kTouchDistance and
@@ -259,10 +276,11 @@ void World::observeRest(std::size_t i, bool emit) {
     }
   }
 
-  if (isDropping(shape.status()) && tracker.atRest &&
-      shape.position().y() < table_.topHeight()) {
-    shape.finishDrop();
-  }
+  // The status rule (EntityPositionStatus.h): down means at rest, and for
+  // a drop also below the table top.
+  const EntityPositionStatus s = shape.status();
+  const bool down = tracker.atRest && (neverOnTable(s) || shape.position().y() < table_.topHeight());
+  shape.setStatus(comeDown(s, down, down && neverOnTable(s) && heldBy(i) == Support::Kind::Table));
 }
 
 std::vector<std::pair<Support, Support>> World::overlaps(double tolerance) {

@@ -6,6 +6,8 @@
 // says what the module guarantees (checked arguments, bounded calls,
 // threads). Each part binds itself (Bindings.h); this file puts them
 // together.
+#include <string>
+
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
@@ -20,6 +22,17 @@ PYBIND11_MODULE(tabletop, m) {
       "(Bullet held to the report's rules) and rules (the report's rules alone). SI units, Y up, angles in degrees.";
   m.attr("__version__") = TABLETOP_VERSION;
 
+  // NumPy first, so that its absence says what to install.
+  try {
+    py::module_::import("numpy");
+  } catch (py::error_already_set& e) {
+    if (!e.matches(PyExc_ImportError)) throw;
+    // A C++ exception becomes the import's own ImportError, with this text
+    // (PYBIND11_MODULE wraps a Python one in "initialization failed").
+    throw py::import_error(std::string("tabletop needs NumPy, which could not be imported (") + e.what() +
+                           "): install it with `apt-get install python3-numpy` (Debian, Ubuntu) or "
+                           "`pip install numpy`");
+  }
   // NumPy's C API is looked up now, once, while the import holds the GIL.
   // pybind11 looks it up on first use inside a function-local static, so
   // importing NumPy under the static's guard: two threads making their

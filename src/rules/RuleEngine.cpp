@@ -29,13 +29,22 @@ RuleEngine::RuleEngine(std::string mode, const Settings& settings, const TableSp
       motion_(bodies_.size()),
       finder_(std::move(finder)),
       release_(release) {
-  // An entity placed in mid-air (on nothing) falls from the start.
+  // Where each entity starts: on the table or never on it; one placed in
+  // mid-air (on nothing) falls from the start.
+  for (std::size_t i = 0; i < bodies_.size(); ++i) {
+    RuleBody& b = bodies_[i];
+    const int held = heldBy(i);
+    const Support::Kind kind = held == kOnTable ? Support::Kind::Table
+                               : held == kOnGround ? Support::Kind::Ground : Support::Kind::None;
+    b.status = startStatus(kind, overTableTop(b.position, b.bottom(), edges_, tableTop_, kLevelSlack));
+  }
   for (std::size_t i = 0; i < bodies_.size(); ++i) {
     if (bodies_[i].support == kOnNothing) {
       startFall(i);
       motion_[i].moving = true;
     }
   }
+  for (std::size_t i = 0; i < bodies_.size(); ++i) judgeStatus(i);
 }
 
 std::size_t RuleEngine::index(const std::string& name) const {
@@ -212,8 +221,10 @@ void RuleEngine::handle(const Next& next) {
     }
     case Next::Kind::TableEdge: leaveTable(i, next.edge); break;
     case Next::Kind::BaseEdge: {
+      // Past a table edge, an entity on the table drops from it; one that
+      // never was on the table only falls off its base.
       const EntityPositionStatus past = dropStatus(bodies_[i].position, edges_);
-      if (past != EntityPositionStatus::OnTable) {
+      if (bodies_[i].status == EntityPositionStatus::OnTable && past != EntityPositionStatus::OnTable) {
         leaveTable(i, past);
         break;
       }
@@ -292,8 +303,9 @@ void RuleEngine::push(const Arrow& arrow, const PushMagnitude& magnitude) {
   if (magnitude.kind != PushMagnitude::Kind::Step) {
     throw std::invalid_argument("the report's rules move entities by steps: give the push a 'step' in metres");
   }
+  const bool pushable = b.status == EntityPositionStatus::OnTable || b.status == EntityPositionStatus::OnGround;
   if (m.phase == Phase::Released || m.phase == Phase::Clearing || m.phase == Phase::Falling ||
-      b.support == kOnGround || b.status != EntityPositionStatus::OnTable) {
+      b.support == kOnGround || !pushable) {
     const std::string where = b.support == kOnGround ? "on the ground (" + std::string(toString(b.status)) + ")"
                                                      : std::string(toString(b.status));
     throw std::invalid_argument("'" + b.name + "' is " + where + ": the report's rules push only entities on the table");

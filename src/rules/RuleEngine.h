@@ -50,8 +50,13 @@ class ReleaseHandler {
 ///   then falls straight down under gravity and lands on the first top it
 ///   meets whose footprint holds its centre (report 3.4, 3.8): the table,
 ///   the ground, or a body, resting or falling too; found as the fall
-///   goes (landing()). Landing on the ground ends the drop
-///   (FinishDropSimulation).
+///   goes (landing()). Landing on the ground, or on what stays up, ends
+///   the drop (FinishDropSimulation).
+/// - An entity that never was on the table (on the ground, on a stack
+///   there, or in the air beside the table) is OnGround while it rests and
+///   OffTable while it falls (EntityPositionStatus.h). It may be pushed
+///   when it rests on another entity; pushed off that one it clears its
+///   edge and falls like a rider, whatever table edge its centre passes.
 /// - A pushed entity resting on another slides across it until its centre
 ///   passes the lower one's edge; it then clears that edge the same way and
 ///   falls onto what is below (the table, or the ground past a table edge).
@@ -139,6 +144,8 @@ class RuleEngine : public Simulation {
   void startFall(std::size_t i);
   Next landing(std::size_t i) const;
   bool descends(std::size_t i) const;  // falling, or carried by a falling body
+  int heldBy(std::size_t i) const;     // its support followed down: kOnTable, kOnGround or kOnNothing
+  void judgeStatus(std::size_t i);     // the status rule, with down = landed on what stays up
   void land(std::size_t i, int on);
   std::vector<std::size_t> riders(std::size_t i) const;
   Support supportOf(int support) const;  // a RuleBody's support as a value

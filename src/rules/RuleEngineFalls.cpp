@@ -60,6 +60,19 @@ void RuleEngine::startFall(std::size_t i) {
   m.phase = Phase::Falling;
   m.fallSpeed = 0.0;
   bodies_[i].support = kOnNothing;
+  judgeStatus(i);
+  for (std::size_t r : riders(i)) judgeStatus(r);
+}
+
+int RuleEngine::heldBy(std::size_t i) const {
+  int s = bodies_[i].support;
+  while (s >= 0) s = bodies_[static_cast<std::size_t>(s)].support;
+  return s;
+}
+
+void RuleEngine::judgeStatus(std::size_t i) {
+  const bool down = !descends(i) && heldBy(i) != kOnNothing;
+  bodies_[i].status = comeDown(bodies_[i].status, down, heldBy(i) == kOnTable);
 }
 
 bool RuleEngine::descends(std::size_t i) const {
@@ -96,7 +109,7 @@ RuleEngine::Next RuleEngine::landing(std::size_t i) const {
   };
   still(0.0, kOnGround);
   const Vec3& c = b.position;
-  if (dropStatus(c, edges_) == EntityPositionStatus::OnTable && b.bottom() >= tableTop_ - kLevelSlack) {
+  if (overTableTop(c, b.bottom(), edges_, tableTop_, kLevelSlack)) {
     still(tableTop_, kOnTable);
   }
   std::vector<bool> carried(bodies_.size(), false);
@@ -121,9 +134,7 @@ RuleEngine::Next RuleEngine::landing(std::size_t i) const {
   return best;
 }
 
-// Lands on `on`: seated on its top, its riders moved with it. The drop
-// ends on the ground, or on a body that stays up; on one still falling it
-// ends when that one lands.
+// Lands on `on`: seated on its top, its riders moved with it.
 void RuleEngine::land(std::size_t i, int on) {
   RuleBody& b = bodies_[i];
   Motion& m = motion_[i];
@@ -135,11 +146,10 @@ void RuleEngine::land(std::size_t i, int on) {
   m.phase = Phase::Resting;
   m.fallSpeed = 0.0;
   b.support = on;
+  // Down once on what stays up: on one still falling, when that one lands.
   if (!descends(i)) {
-    if (on == kOnGround || isDropping(b.status)) b.status = EntityPositionStatus::FinishDropSimulation;
-    for (std::size_t r : riders(i)) {
-      if (isDropping(bodies_[r].status)) bodies_[r].status = EntityPositionStatus::FinishDropSimulation;
-    }
+    judgeStatus(i);
+    for (std::size_t r : riders(i)) judgeStatus(r);
   }
   Event e = eventNow(EventType::Lands, b.name);
   e.on = supportOf(on);

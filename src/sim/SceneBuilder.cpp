@@ -72,6 +72,9 @@ std::unique_ptr<World> buildWorld(const Scenario& scenario, const Settings& sett
                             (other.isEntity() ? "'" + other.name() + "'" : "the " + other.name())});
   }
   if (!problems.empty()) throw ScenarioError(scenario, std::move(problems));
+  // On the contacts just found: a snapshot before the first step shows
+  // what holds each entity up and its status.
+  world->look();
   return world;
 }
 

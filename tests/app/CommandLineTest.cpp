@@ -104,7 +104,7 @@ TEST(CommandLine, HashIsRepeatableAcrossProcesses) {
 
 // Each report example is its own executable with the same options.
 TEST(CommandLine, ExampleExecutablesRunTheirScenario) {
-  const Outcome o = run(kBin + "example4_two_spheres --json");
+  const Outcome o = run(kBin + "tabletop-example4_two_spheres --json");
   ASSERT_EQ(o.status, 0) << o.err;
   const auto j = onlyRun(o.out);
   EXPECT_EQ(j["scenario"], "example4_two_spheres");

@@ -2,6 +2,7 @@
 import json
 import math
 import subprocess
+import sys
 
 import numpy as np
 import pytest
@@ -99,6 +100,13 @@ def test_rotate_turns_an_entity_about_its_vertical_axis():
     sim.rotate("A", 90.0)
     w, x, y, z = sim.orientations[0]
     assert 2 * math.degrees(math.atan2(y, w)) == pytest.approx(90.0, abs=1e-9)
+
+
+def test_without_numpy_the_import_says_what_to_install():
+    """NumPy hidden (None in sys.modules makes its import fail): the module's ImportError names the package."""
+    code = "import sys; sys.modules['numpy'] = None\ntry:\n    import tabletop\nexcept ImportError as e:\n    print(e)"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert "tabletop needs NumPy" in out and "apt-get install python3-numpy" in out, out
 
 
 def test_render_gives_an_rgb_image_of_the_scene():

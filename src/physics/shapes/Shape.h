@@ -82,8 +82,8 @@ class Shape {
   /// The report's CheckBoundary (3.4): OnTable becomes DropFrom...Edge once
   /// the centre passes an edge. Returns true when the status changed.
   bool checkBoundary(const Table& table);
-  /// Marks the end of the drop (FinishDropSimulation).
-  void finishDrop() { status_ = EntityPositionStatus::FinishDropSimulation; }
+  /// Sets the status as the status rule gives it (EntityPositionStatus.h).
+  void setStatus(EntityPositionStatus s) { status_ = s; }
 
   /// What this entity rests on; none while nothing holds it up.
   const Support& support() const { return support_; }
