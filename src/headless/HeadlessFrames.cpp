@@ -9,8 +9,15 @@ HeadlessFrames::HeadlessFrames(int width, int height)
       context_(width * scale_, height * scale_),
       renderer_(context_.gl()) {}
 
+// The context is taken for the frame and let go after it, so frames of one
+// HeadlessFrames may be drawn from any thread, one at a time.
 Image HeadlessFrames::draw(DrawList list, const Camera& camera) const {
   list.contactPixels *= scale_;  // points keep their size in the frame
+  context_.makeCurrent();
+  struct Release {
+    const OsMesaContext& context;
+    ~Release() { context.release(); }
+  } release{context_};
   renderer_.draw(list, camera, context_.width(), context_.height());
   return renderer_.readPixels(context_.width(), context_.height()).shrunk(scale_);
 }

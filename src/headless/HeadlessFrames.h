@@ -19,7 +19,8 @@ class HeadlessFrames {
 
   /// Throws std::runtime_error when OSMesa cannot make the context.
   HeadlessFrames(int width, int height);
-  /// `list` seen by `camera`, width x height pixels, top row first.
+  /// `list` seen by `camera`, width x height pixels, top row first, on
+  /// the calling thread (one thread at a time).
   Image draw(DrawList list, const Camera& camera) const;
   int width() const { return width_; }
   int height() const { return height_; }

@@ -69,9 +69,19 @@ OsMesaContext::OsMesaContext(int width, int height)
     handle_->context = nullptr;
     throw std::runtime_error("OSMesa cannot make its offscreen context current");
   }
-  const auto getProcAddress = m.getProcAddress;
+  const auto getProcAddress = m.getProcAddress;  // the context is current: the functions are its
   gl_ = GlFunctions::load([getProcAddress](const char* name) { return reinterpret_cast<void*>(getProcAddress(name)); });
 }
+
+void OsMesaContext::makeCurrent() const {
+  // OSMesa writes into buffer_, which this object owns and never resizes.
+  auto* pixels = const_cast<unsigned char*>(buffer_.data());
+  if (!handle_->osmesa.makeCurrent(handle_->context, pixels, GL_UNSIGNED_BYTE, width_, height_)) {
+    throw std::runtime_error("OSMesa cannot make its offscreen context current");
+  }
+}
+
+void OsMesaContext::release() const { handle_->osmesa.makeCurrent(nullptr, nullptr, 0, 0, 0); }
 
 OsMesaContext::~OsMesaContext() {
   // The library stays loaded: Mesa keeps per-thread state that a dlclose

@@ -35,10 +35,13 @@ void SteppedScene::runToEnd(const std::function<void()>& between) {
 
 Image SteppedScene::render(int width, int height, const CameraChoice& camera, bool arrow) const {
   const std::vector<EntityState> states = simulation_->snapshot();
-  const HeadlessFrames frames(width, height);
+  if (!frames_ || frames_->width() != width || frames_->height() != height) {
+    frames_.reset();
+    frames_ = std::make_unique<HeadlessFrames>(width, height);
+  }
   DrawOptions options;
   options.arrow = arrow;
-  return frames.draw(makeDrawList(*scenario_, states, player_->arrow(), {}, options),
+  return frames_->draw(makeDrawList(*scenario_, states, player_->arrow(), {}, options),
                      cameraFor(camera, *scenario_, states, SceneExtent::of(*scenario_, states), double(width) / height));
 }
 

@@ -10,6 +10,7 @@
 #include "core/Simulation.h"
 #include "core/SimulationMode.h"
 #include "draw/CameraChoice.h"
+#include "headless/HeadlessFrames.h"
 #include "image/Image.h"
 #include "scenario/Scenario.h"
 #include "sim/ScriptPlayer.h"
@@ -44,6 +45,9 @@ class SteppedScene {
   std::unique_ptr<Scenario> scenario_;
   std::unique_ptr<Simulation> simulation_;
   std::unique_ptr<ScriptPlayer> player_;
+  // The last render's context, kept for the next of the same size: making
+  // one cost 20-50 ms, more than the frame.
+  mutable std::unique_ptr<HeadlessFrames> frames_;
 };
 
 }  // namespace tabletop::python
