@@ -18,6 +18,9 @@ namespace tabletop::python {
 
 namespace py = pybind11;
 
+/// An image's side, pixels: render's --size allows each side 1..8192.
+inline constexpr int kMaxImageSide = 8192;
+
 /// `value`, or a ValueError "`what`: expected ..., got `value`".
 double checkedNumber(const std::string& what, double value, const ranges::Range& range);
 /// An integer (anything with __index__: int, bool, NumPy's integers) from

@@ -17,6 +17,8 @@ namespace tabletop::python {
 void bindScenarios(pybind11::module_& m);
 /// Simulation.
 void bindSimulation(pybind11::module_& m);
+/// write_png.
+void bindImages(pybind11::module_& m);
 
 /// The entities' names, in scenario order (the order of every array).
 std::vector<std::string> entityNames(const Scenario& scenario);

@@ -21,8 +21,6 @@
 namespace tabletop::python {
 namespace {
 
-constexpr int kMaxImageSide = 8192;  // render's --size allows each side 1..8192 pixels
-
 // `f(scene)` for one call on `self`, the scene locked for it.
 template <class F>
 auto with(const py::handle& self, F&& f) {

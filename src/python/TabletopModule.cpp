@@ -42,5 +42,6 @@ PYBIND11_MODULE(tabletop, m) {
 
   tabletop::python::bindScenarios(m);
   tabletop::python::bindSimulation(m);
+  tabletop::python::bindImages(m);
   tabletop::addSweep(m);
 }

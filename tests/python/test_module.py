@@ -118,6 +118,39 @@ def test_render_gives_an_rgb_image_of_the_scene():
         sim.render(160, 120, camera="nowhere")
 
 
+def test_frames_of_one_size_in_a_loop_are_each_the_scene_as_it_is(tmp_path):
+    """The kept context draws each frame anew: the same state gives the same pixels as a fresh object's
+    frame, a changed state a different frame, and a frame of another size in between changes nothing."""
+    first = tabletop.Simulation(str(SCENARIOS / "example2_two_cubes.json"))
+    frames = [first.render(96, 72, camera="corner")]
+    first.render(50, 40, camera="corner")
+    for _ in range(3):
+        first.step(30)
+        frames.append(first.render(96, 72, camera="corner"))
+    second = tabletop.Simulation(str(SCENARIOS / "example2_two_cubes.json"))
+    second.step(90)
+    assert np.array_equal(second.render(96, 72, camera="corner"), frames[-1])
+    assert not np.array_equal(frames[0], frames[-1])  # cube A moved
+
+
+def test_write_png_saves_a_frame_whole_and_refuses_what_is_not_one(tmp_path, tabletop_bin):
+    sim = tabletop.Simulation(str(SCENARIOS / "example2_two_cubes.json"))
+    image = sim.render(64, 48, camera="corner")
+    path = tmp_path / "frame.png"
+    tabletop.write_png(image, str(path))
+    assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["frame.png"]  # no temporary left
+    with pytest.raises(TypeError, match="uint8"):
+        tabletop.write_png(image.astype(np.float32), str(path))
+    with pytest.raises(ValueError, match="shape"):
+        tabletop.write_png(image[:, :, 0], str(path))
+    with pytest.raises(OSError, match="write_png"):
+        tabletop.write_png(image, str(tmp_path / "no-such-folder" / "f.png"))
+    with pytest.raises(OSError, match="printable"):
+        tabletop.write_png(image, str(tmp_path / "a\nb.png"))
+    tabletop.write_png(np.ascontiguousarray(image[::-1]), str(path))  # any layout NumPy gives
+
+
 def test_errors_carry_the_command_lines_located_message(tmp_path, tabletop_bin):
     bad = tmp_path / "bad.json"
     bad.write_text('{"version": 1, "name": "bad",\n "entities": [{"name": "A", "shape": "cube", "size": -1,'
