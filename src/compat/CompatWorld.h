@@ -39,7 +39,7 @@ class CompatWorld : public Simulation, private rules::ReleaseHandler {
   bool allAtRest() const override;
   std::vector<EntityState> snapshot() const override;
   const std::vector<Event>& events() const override { return events_; }
-  std::vector<Vec3> contactPoints() const override { return world_->contactPoints(); }
+  std::vector<ContactReport> contacts() const override { return world_->contacts(); }
   SolverUse solverUse() const override { return world_->solverUse(); }
   WorkCount work() const override;
 

@@ -1,11 +1,13 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "core/Arrow.h"
 #include "core/BodyMotion.h"
+#include "core/ContactReport.h"
 #include "core/ContactSolver.h"
 #include "core/EntityState.h"
 #include "core/Event.h"
@@ -47,9 +49,17 @@ class Simulation {
   }
   /// Everything that happened so far, in time order.
   virtual const std::vector<Event>& events() const = 0;
-  /// Where bodies touch now, in metres, for drawing (none in modes without
-  /// contacts).
-  virtual std::vector<Vec3> contactPoints() const { return {}; }
+  /// Applies an impulse of `impulse` N s now, through the entity's centre
+  /// of mass or, when `point` is given, at that point (m, world frame), so
+  /// that it also sets the body spinning. Modes that follow the report's
+  /// rules take only a horizontal push through the centre (report 3.5), as
+  /// push() by impulse; anything else throws std::invalid_argument.
+  virtual void applyImpulse(const std::string& entity, const Vec3& impulse, const std::optional<Vec3>& point);
+  /// The points where bodies touch after the last step, within 1 mm of
+  /// touching (none in modes without contacts).
+  virtual std::vector<ContactReport> contacts() const { return {}; }
+  /// Where bodies touch now, m, for drawing: contacts()' points.
+  std::vector<Vec3> contactPoints() const;
   /// How the contact solver solved the islands so far (none in the rules).
   virtual SolverUse solverUse() const { return {}; }
   /// The work done so far (WorkCount.h); ScriptPlayer bounds a run by it.

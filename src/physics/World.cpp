@@ -228,22 +228,43 @@ void World::push(const Arrow& arrow, const PushMagnitude& magnitude) {
   const double angle = arrow.worldAngleDegrees(shape.hasFaces() ? shape.yawDegrees() : 0.0);
   const btVector3 direction = toBullet(pushDirection(angle));
 
-  btRigidBody* body = shape.body();
-  body->activate(true);
-  body->applyCentralImpulse(direction * impulse);
-
-  const auto i = static_cast<std::size_t>(body->getUserIndex());
-  trackers_[i].atRest = false;
-  trackers_[i].quietSince = -1.0;
+  shape.body()->applyCentralImpulse(direction * impulse);
 
   Event e;
-  e.t = time_;
   e.type = EventType::Push;
-  e.entity = shape.name();
   e.face = arrow.face;
   e.angle = angle;
   e.impulse = impulse;
   if (magnitude.kind == PushMagnitude::Kind::Step) e.step = magnitude.value;
+  recordPush(shape, e);
+}
+
+// An impulse J at a point r from the centre of mass changes the velocity
+// by J / m and the spin by I^-1 (r x J) (Bullet's applyImpulse).
+void World::applyImpulse(const std::string& name, const Vec3& impulse, const std::optional<Vec3>& point) {
+  start();
+  Shape& shape = entity(name);
+  btRigidBody* body = shape.body();
+  if (point) {
+    body->applyImpulse(toBullet(impulse), toBullet(*point) - body->getCenterOfMassPosition());
+  } else {
+    body->applyCentralImpulse(toBullet(impulse));
+  }
+  Event e;
+  e.type = EventType::Push;
+  e.angle = toDegrees(std::atan2(-impulse.z, impulse.x));
+  e.impulse = impulse.length();
+  recordPush(shape, e);
+}
+
+void World::recordPush(Shape& shape, Event e) {
+  btRigidBody* body = shape.body();
+  body->activate(true);
+  const auto i = static_cast<std::size_t>(body->getUserIndex());
+  trackers_[i].atRest = false;
+  trackers_[i].quietSince = -1.0;
+  e.t = time_;
+  e.entity = shape.name();
   record(e);
 }
 

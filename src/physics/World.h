@@ -101,7 +101,8 @@ class World : public Simulation {
   std::vector<EntityState> snapshot() const override;
   std::vector<BodyMotion> motions() const override;
   const std::vector<Event>& events() const override { return events_; }
-  std::vector<Vec3> contactPoints() const override;
+  void applyImpulse(const std::string& entity, const Vec3& impulse, const std::optional<Vec3>& point) override;
+  std::vector<ContactReport> contacts() const override;
   SolverUse solverUse() const override { return pipeline_.solver->use(); }
   WorkCount work() const override;
 
@@ -150,6 +151,8 @@ class World : public Simulation {
   /// indices) first struck each other; none if they did not.
   std::optional<double> firstStruck(int entity, int other) const;
   void record(const Event& e);
+  // A push of `impulse` N s given to `shape` now: it wakes, and the event says so.
+  void recordPush(Shape& shape, Event e);
   Support participant(const btCollisionObject* object) const;
   Support participant(int userIndex) const;
 

@@ -310,21 +310,29 @@ double World::deepestPenetration() const {
   return deepest;
 }
 
-std::vector<Vec3> World::contactPoints() const {
+std::vector<ContactReport> World::contacts() const {
   // A point counts while it is within Bullet's contact breaking threshold
-  // of touching; the point drawn is midway between the two surfaces.
+  // of touching; it is reported midway between the two surfaces, an entity
+  // first (Bullet's normal points from its second body to its first).
   constexpr double kShownWithin = 1e-3;  // metres
-  std::vector<Vec3> points;
+  std::vector<ContactReport> out;
   for (int m = 0; m < dispatcher_->getNumManifolds(); ++m) {
     const btPersistentManifold* manifold = dispatcher_->getManifoldByIndexInternal(m);
+    const bool swap = manifold->getBody0()->getUserIndex() < 0;
     for (int p = 0; p < manifold->getNumContacts(); ++p) {
       const btManifoldPoint& point = manifold->getContactPoint(p);
       if (point.getDistance() > kShownWithin) continue;
-      const btVector3 mid = 0.5 * (point.getPositionWorldOnA() + point.getPositionWorldOnB());
-      points.push_back({mid.x(), mid.y(), mid.z()});
+      ContactReport c;
+      c.a = participant(swap ? manifold->getBody1() : manifold->getBody0());
+      c.b = participant(swap ? manifold->getBody0() : manifold->getBody1());
+      c.point = toVec3(0.5 * (point.getPositionWorldOnA() + point.getPositionWorldOnB()));
+      c.normal = toVec3(swap ? -point.m_normalWorldOnB : point.m_normalWorldOnB);
+      c.depth = -point.getDistance();
+      c.impulse = point.getAppliedImpulse();
+      out.push_back(c);
     }
   }
-  return points;
+  return out;
 }
 
 std::vector<BodyMotion> World::motions() const {
