@@ -45,6 +45,35 @@ const std::string& checkedEntity(const std::string& what, const Scenario& scenar
   throw py::value_error(what + ": expected the name of an entity, got \"" + shownText(name, 40) + "\"");
 }
 
+const std::string& checkedEntity(const std::string& what, const Scenario& scenario, const py::handle& entity) {
+  if (py::isinstance<py::str>(entity)) return checkedEntity(what, scenario, entity.cast<std::string>());
+  if (PyBool_Check(entity.ptr()) || !PyIndex_Check(entity.ptr())) {
+    throw py::type_error(what + ": expected an entity's name or index, got " +
+                         shownText(py::repr(entity).cast<std::string>(), 40));
+  }
+  const auto n = static_cast<long long>(scenario.entities.size());
+  long long i = checkedInteger(what, entity, -n, n - 1);
+  if (i < 0) i += n;
+  return scenario.entities[static_cast<std::size_t>(i)].name;
+}
+
+Vec3 checkedVector(const std::string& what, const py::handle& value, const ranges::Range& range) {
+  const std::string expected = what + ": expected 3 numbers";
+  if (py::isinstance<py::str>(value) || !PySequence_Check(value.ptr()) || PySequence_Size(value.ptr()) != 3) {
+    if (PyErr_Occurred()) PyErr_Clear();
+    throw py::type_error(expected + ", got " + shownText(py::repr(value).cast<std::string>(), 40));
+  }
+  double c[3];
+  for (int k = 0; k < 3; ++k) {
+    const py::object item = py::reinterpret_borrow<py::sequence>(value)[k];
+    if (!PyFloat_Check(item.ptr()) && !PyIndex_Check(item.ptr()) && !py::hasattr(item, "__float__")) {
+      throw py::type_error(expected + ", got " + shownText(py::repr(value).cast<std::string>(), 40));
+    }
+    c[k] = checkedNumber(what + "[" + std::to_string(k) + "]", py::float_(item).cast<double>(), range);
+  }
+  return {c[0], c[1], c[2]};
+}
+
 SimulationMode modeNamed(const std::string& name) {
   const auto mode = simulationModeFromString(name);
   if (!mode) throw py::value_error("mode: expected bullet, compat or rules, got '" + shownText(name, 40) + "'");

@@ -30,6 +30,13 @@ long long checkedInteger(const std::string& what, const py::handle& value, long 
 /// The name of one of the scene's entities, as the loader checks a
 /// script's: "`what`: expected the name of an entity, got "X"".
 const std::string& checkedEntity(const std::string& what, const Scenario& scenario, const std::string& name);
+/// An entity named (str) or by its index in the arrays (an integer; negative
+/// counts from the end, as Python's indexing): its name. A TypeError for
+/// anything else, a ValueError for no such entity.
+const std::string& checkedEntity(const std::string& what, const Scenario& scenario, const py::handle& entity);
+/// Three finite numbers (a list, tuple or NumPy array), each within
+/// `range`: "`what`: expected 3 numbers ..." otherwise.
+Vec3 checkedVector(const std::string& what, const py::handle& value, const ranges::Range& range);
 
 SimulationMode modeNamed(const std::string& name);
 

@@ -21,17 +21,12 @@
 namespace tabletop::python {
 namespace {
 
-// `f(scene)` for one call on `self`, the scene locked for it.
-template <class F>
-auto with(const py::handle& self, F&& f) {
-  const SimulationObject::Use use = initialised(self).use();
-  return f(*use);
-}
-
 // Simulation(scene, ...): builds the scene and sets it into `self`. Written
 // as a plain method named __init__, not pybind11's py::init: pybind11
 // silently ignores a second __init__ on a live object, which would keep the
 // old scene where the caller asked for a new one; here it is refused.
+}  // namespace
+
 void initialise(const py::handle& self, const py::object& scene, const std::string& mode, bool script,
                 std::optional<double> timestep, const py::object& iterations, std::optional<std::string> integrator) {
   py::detail::value_and_holder holder = valueAndHolder(self);
@@ -50,9 +45,14 @@ void initialise(const py::handle& self, const py::object& scene, const std::stri
   if (holder.holder_constructed()) {
     throw std::runtime_error("Simulation: already initialised; make a new Simulation for another scene");
   }
-  holder.value_ptr() = new SimulationObject(std::move(built));
+  const auto& text = built->scenario().text;
+  py::tuple origin = py::make_tuple(text ? py::object(py::str(*text)) : py::object(py::none()),
+                                    built->scenario().file, mode, script, timestep, iterations, integrator);
+  holder.value_ptr() = new SimulationObject(std::move(built), std::move(origin));
   holder.type->init_instance(holder.inst, nullptr);  // the holder owns it from here, as py::init's would
 }
+
+namespace {
 
 void step(const py::handle& self, const py::object& n) {
   with(self, [&](SteppedScene& scene) {
@@ -75,14 +75,26 @@ void runToEnd(const py::handle& self) {
 }
 
 // A push by impulse or by step, at an angle or on a face: the loader's
-// script push, its fields named as the arguments.
-void push(const py::handle& self, const std::string& entity, std::optional<double> impulse,
-          std::optional<double> step, std::optional<double> angle, std::optional<std::string> face) {
+// script push, its fields named as the arguments. An impulse given as a
+// vector, or at a point, is applied as it is (Simulation::applyImpulse).
+void push(const py::handle& self, const py::object& entity, const py::object& impulse, std::optional<double> step,
+          std::optional<double> angle, std::optional<std::string> face, const py::object& point) {
   with(self, [&](SteppedScene& scene) {
-    Arrow arrow;
-    arrow.entity = checkedEntity("push: entity", scene.scenario(), entity);
-    if (impulse.has_value() == step.has_value()) throw py::value_error("push: expected exactly one of 'step', 'impulse'");
+    const std::string& name = checkedEntity("push: entity", scene.scenario(), entity);
+    if (impulse.is_none() == !step.has_value()) throw py::value_error("push: expected exactly one of 'step', 'impulse'");
     if (face && angle) throw py::value_error("push: expected at most one of 'face', 'angle'");
+    const bool vector = !impulse.is_none() && PySequence_Check(impulse.ptr());
+    if (vector || !point.is_none()) {
+      if (!vector) throw py::value_error("push: point: expected the impulse as a vector [x, y, z] with it");
+      if (face || angle) throw py::value_error("push: an impulse given as a vector takes no 'face' or 'angle'");
+      const Vec3 j = checkedVector("push: impulse", impulse, ranges::kImpulseComponent);
+      std::optional<Vec3> at;
+      if (!point.is_none()) at = checkedVector("push: point", point, ranges::kCoordinate);
+      scene.applyImpulse(name, j, at);
+      return;
+    }
+    Arrow arrow;
+    arrow.entity = name;
     if (face) {
       arrow.face = directionFromString(*face);
       if (!arrow.face) {
@@ -93,13 +105,15 @@ void push(const py::handle& self, const std::string& entity, std::optional<doubl
       arrow.angleDegrees = angle ? checkedNumber("push: angle", *angle, ranges::kAngle) : 0.0;
     }
     const PushMagnitude magnitude =
-        impulse ? PushMagnitude{PushMagnitude::Kind::Impulse, checkedNumber("push: impulse", *impulse, ranges::kImpulse)}
-                : PushMagnitude{PushMagnitude::Kind::Step, checkedNumber("push: step", *step, ranges::kStep)};
+        !impulse.is_none()
+            ? PushMagnitude{PushMagnitude::Kind::Impulse,
+                            checkedNumber("push: impulse", py::float_(impulse).cast<double>(), ranges::kImpulse)}
+            : PushMagnitude{PushMagnitude::Kind::Step, checkedNumber("push: step", *step, ranges::kStep)};
     scene.push(arrow, magnitude);
   });
 }
 
-void rotate(const py::handle& self, const std::string& entity, double degrees) {
+void rotate(const py::handle& self, const py::object& entity, double degrees) {
   with(self, [&](SteppedScene& scene) {
     const std::string& name = checkedEntity("rotate: entity", scene.scenario(), entity);
     scene.rotate(name, checkedNumber("rotate: degrees", degrees, ranges::kAngle));
@@ -123,24 +137,6 @@ py::array_t<std::uint8_t> render(const py::handle& self, const py::object& width
     return out;
   });
 }
-
-// One row per entity, in scenario order, of `columns` numbers picked from
-// each body's motion.
-template <typename Pick>
-py::array_t<double> rows(const py::handle& self, int columns, Pick pick) {
-  return with(self, [&](SteppedScene& scene) {
-    const std::vector<BodyMotion> motions = scene.simulation().motions();
-    py::array_t<double> out({static_cast<py::ssize_t>(motions.size()), static_cast<py::ssize_t>(columns)});
-    auto view = out.mutable_unchecked<2>();
-    for (std::size_t i = 0; i < motions.size(); ++i) {
-      const std::vector<double> row = pick(motions[i]);
-      for (int c = 0; c < columns; ++c) view(static_cast<py::ssize_t>(i), c) = row[static_cast<std::size_t>(c)];
-    }
-    return out;
-  });
-}
-
-std::vector<double> xyz(const Vec3& v) { return {v.x, v.y, v.z}; }
 
 }  // namespace
 
@@ -168,11 +164,17 @@ void bindSimulation(py::module_& m) {
            "stops it between steps.")
       .def("push", &push, py::arg("entity"), py::kw_only(), py::arg("impulse") = py::none(),
            py::arg("step") = py::none(), py::arg("angle") = py::none(), py::arg("face") = py::none(),
-           "Pushes an entity now by an impulse (N s, up to 1e6) or by a step (m, up to 100: the impulse that makes "
-           "it, alone on the table, travel that far), at a world angle in degrees (0 is +X, 90 is -Z; the default) "
-           "or on a face (Front, Back, Left, Right).")
+           py::arg("point") = py::none(),
+           "Pushes an entity (its name or index) now by an impulse (N s, up to 1e6) or by a step (m, up to 100: "
+           "the impulse that makes it, alone on the table, travel that far), at a world angle in degrees (0 is +X, "
+           "90 is -Z; the default) or on a face (Front, Back, Left, Right): the report's push. An impulse given as "
+           "a vector [x, y, z] (N s, each part within +-1e6) is applied as it is, through the centre of mass or "
+           "at point [x, y, z] (m, world frame), which sets the body spinning: the velocity changes by J/m and "
+           "the spin by I^-1 (r x J). Modes 'compat' and 'rules' take only a horizontal vector through the "
+           "centre (ValueError otherwise).")
       .def("rotate", &rotate, py::arg("entity"), py::arg("degrees"),
-           "Turns an entity about its own vertical axis (the report's Rotate), degrees within +-1e6.")
+           "Turns an entity (its name or index) about its own vertical axis (the report's Rotate), degrees within "
+           "+-1e6.")
       .def("render", &render, py::arg("width") = 640, py::arg("height") = 480, py::kw_only(),
            py::arg("camera") = "fit", py::arg("arrow") = true,
            "The scene now, drawn headless (OSMesa) and anti-aliased, as a NumPy array of shape (height, width, 3), "
@@ -184,51 +186,9 @@ void bindSimulation(py::module_& m) {
       .def("__enter__", [](const py::object& self) { return self; })
       .def("__exit__", [](const py::handle& self, const py::args&) { initialised(self).close(); })
       .def_property_readonly("closed", [](const py::handle& self) { return initialised(self).closed(); },
-                             "True once close() was called.")
-      .def_property_readonly(
-          "positions", [](const py::handle& s) { return rows(s, 3, [](const BodyMotion& b) { return xyz(b.position); }); },
-          "Centres, m, shape (n, 3).")
-      .def_property_readonly(
-          "orientations",
-          [](const py::handle& s) {
-            return rows(s, 4, [](const BodyMotion& b) { return std::vector<double>(b.orientation.begin(), b.orientation.end()); });
-          },
-          "Unit quaternions w, x, y, z, shape (n, 4).")
-      .def_property_readonly(
-          "velocities",
-          [](const py::handle& s) { return rows(s, 3, [](const BodyMotion& b) { return xyz(b.linearVelocity); }); },
-          "Linear velocities, m/s, shape (n, 3).")
-      .def_property_readonly(
-          "angular_velocities",
-          [](const py::handle& s) { return rows(s, 3, [](const BodyMotion& b) { return xyz(b.angularVelocity); }); },
-          "Angular velocities, rad/s, world frame, shape (n, 3).")
-      .def_property_readonly(
-          "names", [](const py::handle& s) { return with(s, [](SteppedScene& x) { return entityNames(x.scenario()); }); },
-          "The entities' names, in the arrays' order.")
-      .def_property_readonly(
-          "time", [](const py::handle& s) { return with(s, [](SteppedScene& x) { return x.simulation().time(); }); },
-          "Simulated seconds.")
-      .def_property_readonly(
-          "steps", [](const py::handle& s) { return with(s, [](SteppedScene& x) { return x.simulation().steps(); }); },
-          "Steps taken.")
-      .def_property_readonly(
-          "timestep",
-          [](const py::handle& s) { return with(s, [](SteppedScene& x) { return x.scenario().settings.timestep; }); },
-          "The fixed timestep, s.")
-      .def_property_readonly(
-          "at_rest", [](const py::handle& s) { return with(s, [](SteppedScene& x) { return x.simulation().allAtRest(); }); },
-          "True when no entity moves.")
-      .def_property_readonly(
-          "finished", [](const py::handle& s) { return with(s, [](SteppedScene& x) { return x.finished(); }); },
-          "True once the duration is reached, or the script is done and all rests.")
-      .def_property_readonly(
-          "mode",
-          [](const py::handle& s) { return with(s, [](SteppedScene& x) { return std::string(x.simulation().modeName()); }); },
-          "'bullet', 'compat' or 'rules'.")
-      .def(
-          "result", [](const py::handle& s) { return with(s, [](SteppedScene& x) { return fromJson(toJson(x.result())); }); },
-          "The state now as run --json gives it: entities (position, orientation, velocities, status, support), "
-          "events, state_hash.");
+                             "True once close() was called.");
+  bindSimulationReadings(simulation);
+  bindSimulationStates(simulation);
 }
 
 }  // namespace tabletop::python

@@ -20,7 +20,11 @@ namespace tabletop::python {
 /// refused rather than left waiting for itself.
 class SimulationObject {
  public:
-  explicit SimulationObject(std::unique_ptr<SteppedScene> scene) : scene_(std::move(scene)) {}
+  /// `origin` is how the scene was made, for copies and pickles: the
+  /// scenario's text and file name, the mode, whether the script runs, and
+  /// the settings given to the constructor.
+  SimulationObject(std::unique_ptr<SteppedScene> scene, pybind11::tuple origin)
+      : scene_(std::move(scene)), origin_(std::move(origin)) {}
 
   /// The scene for the length of one call, locked.
   class Use {
@@ -42,6 +46,7 @@ class SimulationObject {
   /// Frees the scene; every later call but close() raises RuntimeError.
   void close();
   bool closed();
+  const pybind11::tuple& origin() const { return origin_; }
 
  private:
   /// Waits for the lock with the GIL released; refuses a call from the
@@ -51,6 +56,7 @@ class SimulationObject {
   std::mutex mutex_;
   std::atomic<std::thread::id> owner_{};
   std::unique_ptr<SteppedScene> scene_;
+  pybind11::tuple origin_;
 };
 
 /// Where `self` (a Simulation, else a TypeError) keeps its object: the
@@ -61,5 +67,12 @@ pybind11::detail::value_and_holder valueAndHolder(const pybind11::handle& self);
 /// SimulationObject* would not do: pybind11 hands such an object a pointer
 /// to fresh, unconstructed memory.)
 SimulationObject& initialised(const pybind11::handle& self);
+
+/// `f(scene)` for one call on `self`, the scene locked for it.
+template <class F>
+auto with(const pybind11::handle& self, F&& f) {
+  const SimulationObject::Use use = initialised(self).use();
+  return f(*use);
+}
 
 }  // namespace tabletop::python

@@ -12,6 +12,7 @@
 #include "draw/CameraChoice.h"
 #include "headless/HeadlessFrames.h"
 #include "image/Image.h"
+#include "python/SceneHistory.h"
 #include "scenario/Scenario.h"
 #include "sim/ScriptPlayer.h"
 
@@ -22,6 +23,10 @@ namespace tabletop::python {
 /// asked for) and guards against divergence. Plain C++, free of Python:
 /// the binding checks every argument first and calls it with the GIL
 /// released, one thread at a time (SimulationObject).
+///
+/// Every call that changes the scene is kept in its history
+/// (SceneHistory), so that reset() and restore() build it again bit for
+/// bit.
 class SteppedScene {
  public:
   SteppedScene(Scenario scenario, SimulationMode mode, bool script);
@@ -30,8 +35,22 @@ class SteppedScene {
   void step(long long n, const std::function<void()>& between);
   /// Steps until finished(), at most to the duration the loader bounded.
   void runToEnd(const std::function<void()>& between);
-  void push(const Arrow& arrow, const PushMagnitude& magnitude) { player_->push(arrow, magnitude); }
-  void rotate(const std::string& entity, double degrees) { simulation_->rotate(entity, degrees); }
+  void push(const Arrow& arrow, const PushMagnitude& magnitude);
+  void rotate(const std::string& entity, double degrees);
+  void applyImpulse(const std::string& entity, const Vec3& impulse, const std::optional<Vec3>& point);
+
+  /// The scene as it was built; the history empties.
+  void reset();
+  /// The scene built again with `history`'s calls made on it: the state
+  /// they made, bit for bit. Each call is checked as it was when made
+  /// (std::invalid_argument for an unknown entity); the steps as a whole
+  /// are held to the loader's bound on a run's size, and `between` runs
+  /// after each step.
+  void restore(const SceneHistory& history, const std::function<void()>& between);
+  const SceneHistory& history() const { return history_; }
+  /// Why the history cannot give back the state now (a step that raised,
+  /// or too many calls), or empty when it can.
+  std::string unsaveable() const;
 
   /// The scene now, drawn headless: width x height RGB, top row first.
   Image render(int width, int height, const CameraChoice& camera, bool arrow) const;
@@ -39,12 +58,22 @@ class SteppedScene {
 
   const Scenario& scenario() const { return *scenario_; }
   const Simulation& simulation() const { return *simulation_; }
+  SimulationMode mode() const { return mode_; }
   bool finished() const { return player_->finished(); }
 
  private:
+  void build();
+  void stepPlayer(long long n, const std::function<void()>& between);
+  // What is wrong with replaying `history`'s steps, as the loader says it
+  // of a run's (empty when nothing is).
+  std::string tooLong(const SceneHistory& history) const;
+
   std::unique_ptr<Scenario> scenario_;
+  SimulationMode mode_;
   std::unique_ptr<Simulation> simulation_;
   std::unique_ptr<ScriptPlayer> player_;
+  SceneHistory history_;
+  std::string failed_;  // what a step raised, once one did
   // The last render's context, kept for the next of the same size: making
   // one cost 20-50 ms, more than the frame.
   mutable std::unique_ptr<HeadlessFrames> frames_;

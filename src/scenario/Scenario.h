@@ -58,6 +58,9 @@ struct Scenario {
   /// Where each value stands in that file, so that a problem found after
   /// loading (at run time) is located too; null for a scene built in code.
   std::shared_ptr<const JsonLocator> locator;
+  /// The text it was read from (the Python module pickles a scene by it);
+  /// null for a scene built in code.
+  std::shared_ptr<const std::string> text;
   TableSpec table;
   Material ground = kNeutralMaterial;  ///< the floor's material
   std::vector<EntitySpec> entities;

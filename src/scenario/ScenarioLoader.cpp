@@ -138,6 +138,7 @@ Scenario ScenarioLoader::loadText(const std::string& text, const std::string& so
   Scenario s = read(root, problems);
   s.file = source;
   s.locator = std::move(locator);
+  s.text = std::make_shared<const std::string>(text);
   if (!problems.empty()) throw ScenarioError(s, std::move(problems));
   return s;
 }

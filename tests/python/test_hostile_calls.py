@@ -41,7 +41,9 @@ calls = {
     "velocities": lambda s: s.velocities, "angular_velocities": lambda s: s.angular_velocities,
     "names": lambda s: s.names, "time": lambda s: s.time, "steps": lambda s: s.steps,
     "timestep": lambda s: s.timestep, "at_rest": lambda s: s.at_rest, "finished": lambda s: s.finished,
-    "mode": lambda s: s.mode,
+    "mode": lambda s: s.mode, "contacts": lambda s: s.contacts, "reset": lambda s: s.reset(),
+    "get_state": lambda s: s.get_state(), "copy": lambda s: s.copy(), "__getstate__": lambda s: s.__getstate__(),
+    "push at a point": lambda s: s.push(0, impulse=[0.1, 0, 0], point=[0, 0.8, 0]),
 }
 """
 
@@ -60,13 +62,17 @@ for name, call in dict(calls, close=lambda s: s.close(), closed=lambda s: s.clos
         raise AssertionError(name + " did not raise")
 live = tabletop.Simulation({"version": 1, "name": "c", "entities": [{"name": "A", "shape": "cube", "size": 0.1,
                             "mass": 1, "position": [0, 0], "on": "table"}]})
-# A copy is refused (there is no state to copy it from).
+# A copy is a scene of its own; one of an object never initialised is refused.
+twin = copy.copy(live)
+twin.step()
+assert twin.steps == 1 and live.steps == 0
+assert "not initialised" in repr(raw)
 try:
-    copy.copy(live).step()
-except TypeError as e:
-    assert "pickle" in str(e)
+    copy.copy(raw)
+except RuntimeError as e:
+    assert "not initialised" in str(e)
 else:
-    raise AssertionError("a copy stepped")
+    raise AssertionError("a copy of nothing was made")
 # A subclass that forgets the base __init__ is told so by pybind11.
 class Forgetful(tabletop.Simulation):
     def __init__(self):

@@ -198,8 +198,11 @@ def test_the_library_pages_session_runs_as_shown(monkeypatch, tmp_path):
     monkeypatch.chdir(tmp_path)
     parser = doctest.DocTestParser()
     runner = doctest.DocTestRunner(optionflags=doctest.NORMALIZE_WHITESPACE)
+    session = {}  # the page's blocks are one session
     for text in blocks:
-        runner.run(parser.get_doctest(text, {}, "library", "docs/library.md", 0))
+        test = parser.get_doctest(text, session, "library", "docs/library.md", 0)
+        runner.run(test, clear_globs=False)
+        session = test.globs
     assert runner.summarize(verbose=False).failed == 0
 
 

@@ -1,0 +1,67 @@
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/Arrow.h"
+#include "core/Vec3.h"
+
+namespace tabletop::python {
+
+/// One call that changed a scene from Python: steps taken, the script's
+/// due actions carried out, a push, a turn, an impulse.
+struct SceneCall {
+  enum class Kind { Steps, RunDue, Push, Rotate, Impulse };
+  Kind kind = Kind::Steps;
+  long long count = 0;         ///< Steps: how many were taken
+  Arrow arrow;                 ///< Push (its entity names the body of Rotate and Impulse too)
+  PushMagnitude magnitude;     ///< Push
+  double degrees = 0.0;        ///< Rotate
+  Vec3 impulse;                ///< Impulse, N s
+  std::optional<Vec3> point;   ///< Impulse, m, world frame
+
+  static SceneCall of(Kind kind, long long count = 0) {
+    SceneCall call;
+    call.kind = kind;
+    call.count = count;
+    return call;
+  }
+};
+
+/// Every call that changed a scene since it was built, in order. The
+/// simulation is deterministic, so building the scene again and making
+/// the same calls gives a bit-identical state: how reset(), set_state(),
+/// copy() and pickling restore a scene exactly. Runs of steps are kept as
+/// one count; at most kMaxCalls calls are kept (a longer history cannot
+/// be saved).
+class SceneHistory {
+ public:
+  static constexpr std::size_t kMaxCalls = 100000;
+  /// Its JSON is at most about 100 bytes a call: a pickle's is refused past this.
+  static constexpr std::size_t kMaxJsonBytes = 64u << 20;
+
+  /// Adds `call`, merging steps into the steps before them.
+  void add(const SceneCall& call);
+  const std::vector<SceneCall>& calls() const { return calls_; }
+  /// The steps taken in all.
+  double steps() const;
+  /// False once more than kMaxCalls calls were made.
+  bool complete() const { return complete_; }
+  void clear() { *this = SceneHistory(); }
+
+  nlohmann::json toJson() const;
+  /// The history `j` describes, each value checked as the call's argument
+  /// is: std::invalid_argument naming what is wrong (a pickle may come
+  /// from anyone).
+  static SceneHistory fromJson(const nlohmann::json& j);
+
+ private:
+  std::vector<SceneCall> calls_;
+  bool complete_ = true;
+};
+
+}  // namespace tabletop::python

@@ -1,0 +1,124 @@
+"""Contacts and impulses from Python against closed forms, over shapes,
+sizes, masses and rates: a resting body's contact impulses carry its weight
+(sum of normal impulses = m g dt), an impulse J at a point r from the centre
+of mass gives v = J/m and w = I^-1 (r x J), and on a frictionless table the
+body then glides and turns at those rates."""
+import math
+
+import numpy as np
+import pytest
+
+import tabletop
+
+G = 9.81
+RATES = [30, 60, 240]
+BOXES = [(1.0, [0.1, 0.1, 0.1]), (3.0, [0.3, 0.1, 0.2]), (0.2, [0.05, 0.2, 0.08])]
+
+
+def one_box(size, mass, rate, friction, yaw=0.0):
+    return {"version": 1, "name": "one box", "table": {"size": [2, 2], "material": {"friction": friction}},
+            "settings": {"timestep": 1 / rate, "duration": 5},
+            "entities": [{"name": "A", "shape": "box", "size": size, "mass": mass, "position": [0.1, -0.2],
+                          "yaw": yaw, "material": {"friction": friction}}]}
+
+
+def box_inertia(mass, size):
+    a, b, c = size
+    return mass / 12 * np.array([b * b + c * c, a * a + c * c, a * a + b * b])
+
+
+@pytest.mark.parametrize("rate", RATES)
+@pytest.mark.parametrize("mass,size", BOXES)
+def test_a_resting_box_touches_the_table_at_its_corners_and_its_impulses_carry_its_weight(mass, size, rate):
+    sim = tabletop.Simulation(one_box(size, mass, rate, 0.5), script=False)
+    sim.step(5)
+    contacts = sim.contacts
+    centre = sim.positions[0]
+    assert len(contacts) == 4
+    for c in contacts:
+        assert (c.a, c.b) == ("A", "table")
+        assert c.normal == pytest.approx((0, 1, 0), abs=1e-12)
+        assert abs(c.depth) < 1e-5  # m
+        assert c.point[1] == pytest.approx(0.75, abs=1e-5)  # the table top, m
+        # At a bottom corner: half the width and depth from the centre,
+        # within the micrometres a body settles by in its first steps.
+        assert abs(c.point[0] - centre[0]) == pytest.approx(size[0] / 2, abs=1e-5)
+        assert abs(c.point[2] - centre[2]) == pytest.approx(size[2] / 2, abs=1e-5)
+    # The weight over one step, N s, within 1e-4 relative.
+    assert sum(c.impulse for c in contacts) == pytest.approx(mass * G / rate, rel=1e-4)
+
+
+def test_a_stacked_cubes_contact_normal_points_from_b_to_a():
+    sim = tabletop.Simulation("example3_stacked_cubes", script=False)
+    sim.step(3)
+    positions = dict(zip(sim.names, sim.positions))
+    between = [c for c in sim.contacts if c.b in positions]
+    assert between
+    for c in between:
+        assert np.dot(c.normal, positions[c.a] - positions[c.b]) > 0
+    assert tabletop.Simulation("example3_stacked_cubes", mode="rules").contacts == []
+
+
+@pytest.mark.parametrize("rate", RATES)
+@pytest.mark.parametrize("mass,size", BOXES)
+@pytest.mark.parametrize("arm,speed", [([0.1, 0, 0], [0, 0, 0.4]), ([0, 0, -0.03], [0.3, 0, 0.2]),
+                                       ([0.02, 0, 0.01], [-0.3, 0, 0.1])])
+def test_an_impulse_at_a_point_on_a_frictionless_table_glides_and_spins_as_the_closed_form(mass, size, rate, arm,
+                                                                                            speed):
+    sim = tabletop.Simulation(one_box(size, mass, rate, 0.0), script=False)
+    start = sim.positions[0].copy()
+    j, r = mass * np.array(speed), np.array(arm)  # N s: at most 0.4 m/s, so it stays on the table for 1 s
+    sim.push("A", impulse=j, point=start + r)
+    v, w = j / mass, np.cross(r, j) / box_inertia(mass, size)
+    assert sim.velocities[0] == pytest.approx(v, abs=1e-12)
+    assert sim.angular_velocities[0] == pytest.approx(w, abs=1e-12)
+    sim.step(rate)  # 1 s
+    t = sim.time
+    assert sim.positions[0] == pytest.approx(start + v * t, abs=1e-7)  # m
+    q = sim.orientations[0]
+    turned = 2 * math.atan2(q[2], q[0])  # about +Y, rad
+    assert math.remainder(turned - w[1] * t, 2 * math.pi) == pytest.approx(0, abs=1e-9)
+
+
+@pytest.mark.parametrize("rate", RATES)
+def test_a_vertical_impulse_throws_a_box_up_and_it_lands_where_it_left(rate):
+    mass, size = 0.5, [0.1, 0.06, 0.1]
+    sim = tabletop.Simulation(one_box(size, mass, rate, 0.5), script=False)
+    start = sim.positions[0].copy()
+    v = 1.2  # m/s up
+    sim.push(0, impulse=[0, mass * v, 0])
+    assert sim.velocities[0] == pytest.approx([0, v, 0], abs=1e-12)
+    flight = 2 * v / G
+    apex = 0.0
+    while sim.time < flight - 1.5 / rate:
+        sim.step()
+        t = sim.time
+        assert sim.positions[0][1] == pytest.approx(start[1] + v * t - G * t * t / 2, abs=1e-7)  # m
+        apex = max(apex, sim.positions[0][1] - start[1])
+    assert apex <= v * v / (2 * G) + 1e-9
+    sim.step(2 * rate)
+    assert sim.positions[0] == pytest.approx(start, abs=1e-5)
+
+
+@pytest.mark.parametrize("mode", ["compat", "rules"])
+def test_the_report_modes_take_only_the_reports_push(mode):
+    sim = tabletop.Simulation("example2_two_cubes", mode=mode, script=False)
+    for kwargs in [{"impulse": [0, 0.1, 0]}, {"impulse": [0.1, 0, 0], "point": [0, 0.8, 0]}]:
+        with pytest.raises(ValueError, match="report 3.5"):
+            sim.push("A", **kwargs)
+
+
+def test_impulse_arguments_are_checked():
+    sim = tabletop.Simulation("example2_two_cubes", script=False)
+    for kwargs, error, words in [
+        ({"impulse": [1, 2]}, TypeError, "expected 3 numbers"),
+        ({"impulse": "abc"}, TypeError, "expected 3 numbers"),
+        ({"impulse": [0, math.nan, 0]}, ValueError, r"impulse\[1\]"),
+        ({"impulse": [2e6, 0, 0]}, ValueError, r"impulse\[0\]"),
+        ({"impulse": [1, 0, 0], "point": [0, 1e9, 0]}, ValueError, r"point\[1\]"),
+        ({"impulse": 0.1, "point": [0, 0, 0]}, ValueError, "as a vector"),
+        ({"impulse": [1, 0, 0], "angle": 3}, ValueError, "no 'face' or 'angle'"),
+    ]:
+        with pytest.raises(error, match=words):
+            sim.push("A", **kwargs)
+    assert sim.velocities.any() == False  # noqa: E712 (nothing changed)
