@@ -51,6 +51,18 @@ void CompatWorld::rotate(const std::string& entity, double degrees) {
   mergeEvents();
 }
 
+// The rules move what is on the table and Bullet what has left it: both
+// step at the new rate, under the new gravity.
+void CompatWorld::setTimestep(double seconds) {
+  engine_->setTimestep(seconds);
+  world_->setTimestep(seconds);
+}
+
+void CompatWorld::setGravity(double g) {
+  engine_->setGravity(g);
+  world_->setGravity(g);
+}
+
 void CompatWorld::step() {
   engine_->step();
   place();

@@ -34,6 +34,8 @@ class CompatWorld : public Simulation, private rules::ReleaseHandler {
   void push(const Arrow& arrow, const PushMagnitude& magnitude) override;
   void rotate(const std::string& entity, double degrees) override;
   void step() override;
+  void setTimestep(double seconds) override;
+  void setGravity(double g) override;
   double time() const override { return engine_->time(); }
   long steps() const override { return engine_->steps(); }
   bool allAtRest() const override;

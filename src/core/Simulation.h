@@ -55,6 +55,10 @@ class Simulation {
   /// rules take only a horizontal push through the centre (report 3.5), as
   /// push() by impulse; anything else throws std::invalid_argument.
   virtual void applyImpulse(const std::string& entity, const Vec3& impulse, const std::optional<Vec3>& point);
+  /// Steps from now on last `seconds` (a checked timestep, ValueRanges.h).
+  virtual void setTimestep(double seconds) = 0;
+  /// Gravity from now on: `g` m/s^2 along -Y (checked, ValueRanges.h).
+  virtual void setGravity(double g) = 0;
   /// The points where bodies touch after the last step, within 1 mm of
   /// touching (none in modes without contacts).
   virtual std::vector<ContactReport> contacts() const { return {}; }

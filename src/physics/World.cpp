@@ -338,8 +338,24 @@ void World::step() {
     }
   }
   ++steps_;
-  time_ = static_cast<double>(steps_) * settings_.timestep;
+  time_ = clock_.time(steps_, settings_.timestep);
   observe(true);
+}
+
+void World::setTimestep(double seconds) {
+  clock_.changeAt(steps_, time_);
+  settings_.timestep = seconds;
+}
+
+// Bullet gives every body the world's gravity; the solver's slip test and
+// the step's bound on smooth accelerations are made from it too. Sleeping
+// bodies wake, as under any change to what acts on them.
+void World::setGravity(double g) {
+  settings_.gravity = g;
+  world_->changeGravity(g);
+  pipeline_.solver->setGravity(g);
+  updateSmoothAcceleration();
+  for (const auto& e : entities_) e->body()->activate(true);
 }
 
 // How many equal parts a step is cut into: enough that no awake entity

@@ -12,6 +12,7 @@
 
 #include "core/Settings.h"
 #include "core/Simulation.h"
+#include "core/StepClock.h"
 #include "core/TableSpec.h"
 #include "physics/step/DynamicsWorld.h"
 #include "physics/shapes/Ground.h"
@@ -95,6 +96,8 @@ class World : public Simulation {
   void push(const Arrow& arrow, const PushMagnitude& magnitude) override;
   void rotate(const std::string& entity, double degrees) override;
   void step() override;
+  void setTimestep(double seconds) override;
+  void setGravity(double g) override;
   double time() const override { return time_; }
   long steps() const override { return steps_; }
   bool allAtRest() const override;
@@ -190,6 +193,7 @@ class World : public Simulation {
   double entityFriction_ = 0.0;  // the largest friction coefficient of any entity
   double time_ = 0.0;
   long steps_ = 0;
+  StepClock clock_;
   bool started_ = false;
   bool legsIn_ = false;  // the table's separate legs are in the world
 };

@@ -81,8 +81,10 @@ json SceneHistory::toJson() const {
         break;
       }
       case SceneCall::Kind::Rotate:
-        out.push_back({{"call", "rotate"}, {"entity", c.arrow.entity}, {"degrees", c.degrees}});
+        out.push_back({{"call", "rotate"}, {"entity", c.arrow.entity}, {"degrees", c.value}});
         break;
+      case SceneCall::Kind::Timestep: out.push_back({{"call", "timestep"}, {"seconds", c.value}}); break;
+      case SceneCall::Kind::Gravity: out.push_back({{"call", "gravity"}, {"g", c.value}}); break;
       case SceneCall::Kind::Impulse: {
         json p = {{"call", "impulse"}, {"entity", c.arrow.entity}, {"impulse", vec(c.impulse)}};
         if (c.point) p["point"] = vec(*c.point);
@@ -124,7 +126,13 @@ SceneHistory SceneHistory::fromJson(const json& j) {
     } else if (kind == "rotate") {
       call.kind = SceneCall::Kind::Rotate;
       call.arrow.entity = text(c, "entity", i);
-      call.degrees = number(c, "degrees", ranges::kAngle, i);
+      call.value = number(c, "degrees", ranges::kAngle, i);
+    } else if (kind == "timestep") {
+      call.kind = SceneCall::Kind::Timestep;
+      call.value = number(c, "seconds", ranges::kTimestep, i);
+    } else if (kind == "gravity") {
+      call.kind = SceneCall::Kind::Gravity;
+      call.value = number(c, "g", ranges::kGravity, i);
     } else if (kind == "impulse") {
       call.kind = SceneCall::Kind::Impulse;
       call.arrow.entity = text(c, "entity", i);

@@ -13,21 +13,23 @@
 namespace tabletop::python {
 
 /// One call that changed a scene from Python: steps taken, the script's
-/// due actions carried out, a push, a turn, an impulse.
+/// due actions carried out, a push, a turn, an impulse, a new timestep or
+/// gravity.
 struct SceneCall {
-  enum class Kind { Steps, RunDue, Push, Rotate, Impulse };
+  enum class Kind { Steps, RunDue, Push, Rotate, Impulse, Timestep, Gravity };
   Kind kind = Kind::Steps;
   long long count = 0;         ///< Steps: how many were taken
   Arrow arrow;                 ///< Push (its entity names the body of Rotate and Impulse too)
   PushMagnitude magnitude;     ///< Push
-  double degrees = 0.0;        ///< Rotate
+  double value = 0.0;          ///< Rotate: degrees; Timestep: s; Gravity: m/s^2
   Vec3 impulse;                ///< Impulse, N s
   std::optional<Vec3> point;   ///< Impulse, m, world frame
 
-  static SceneCall of(Kind kind, long long count = 0) {
+  static SceneCall of(Kind kind, long long count = 0, double value = 0.0) {
     SceneCall call;
     call.kind = kind;
     call.count = count;
+    call.value = value;
     return call;
   }
 };

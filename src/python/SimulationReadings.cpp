@@ -88,10 +88,22 @@ void bindSimulationReadings(py::class_<SimulationObject>& simulation) {
       .def_property_readonly(
           "steps", [](const py::handle& s) { return with(s, [](SteppedScene& x) { return x.simulation().steps(); }); },
           "Steps taken.")
-      .def_property_readonly(
+      .def_property(
           "timestep",
           [](const py::handle& s) { return with(s, [](SteppedScene& x) { return x.scenario().settings.timestep; }); },
-          "The fixed timestep, s.")
+          [](const py::handle& s, double seconds) {
+            checkedNumber("timestep", seconds, ranges::kTimestep);
+            with(s, [&](SteppedScene& x) { x.setTimestep(seconds); });
+          },
+          "The fixed timestep, s; set between steps (1e-5 to 0.1 s), the steps after it take the new one.")
+      .def_property(
+          "gravity",
+          [](const py::handle& s) { return with(s, [](SteppedScene& x) { return x.scenario().settings.gravity; }); },
+          [](const py::handle& s, double g) {
+            checkedNumber("gravity", g, ranges::kGravity);
+            with(s, [&](SteppedScene& x) { x.setGravity(g); });
+          },
+          "Gravity, m/s^2 along -Y; set between steps (0 to 100), the steps after it fall under the new one.")
       .def_property_readonly(
           "at_rest", [](const py::handle& s) { return with(s, [](SteppedScene& x) { return x.simulation().allAtRest(); }); },
           "True when no entity moves.")

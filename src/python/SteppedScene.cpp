@@ -16,11 +16,13 @@ namespace tabletop::python {
 SteppedScene::SteppedScene(Scenario scenario, SimulationMode mode, bool script)
     : scenario_(std::make_unique<Scenario>(std::move(scenario))), mode_(mode) {
   if (!script) scenario_->script.clear();
+  built_ = scenario_->settings;
   build();
 }
 
 void SteppedScene::build() {
   player_.reset();
+  scenario_->settings = built_;
   simulation_ = buildSimulation(*scenario_, scenario_->settings, mode_);
   player_ = std::make_unique<ScriptPlayer>(*scenario_, scenario_->settings, *simulation_);
   player_->runDue();
@@ -69,7 +71,7 @@ void SteppedScene::rotate(const std::string& entity, double degrees) {
   simulation_->rotate(entity, degrees);
   SceneCall call = SceneCall::of(SceneCall::Kind::Rotate);
   call.arrow.entity = entity;
-  call.degrees = degrees;
+  call.value = degrees;
   history_.add(call);
 }
 
@@ -82,11 +84,24 @@ void SteppedScene::applyImpulse(const std::string& entity, const Vec3& impulse, 
   history_.add(call);
 }
 
+void SteppedScene::setTimestep(double seconds) {
+  simulation_->setTimestep(seconds);
+  scenario_->settings.timestep = seconds;
+  history_.add(SceneCall::of(SceneCall::Kind::Timestep, 0, seconds));
+}
+
+void SteppedScene::setGravity(double g) {
+  simulation_->setGravity(g);
+  scenario_->settings.gravity = g;
+  history_.add(SceneCall::of(SceneCall::Kind::Gravity, 0, g));
+}
+
 void SteppedScene::reset() { build(); }
 
 void SteppedScene::restore(const SceneHistory& history, const std::function<void()>& between) {
   for (const SceneCall& call : history.calls()) {
-    const bool named = call.kind != SceneCall::Kind::Steps && call.kind != SceneCall::Kind::RunDue;
+    const bool named = call.kind == SceneCall::Kind::Push || call.kind == SceneCall::Kind::Rotate ||
+                       call.kind == SceneCall::Kind::Impulse;
     if (named && std::none_of(scenario_->entities.begin(), scenario_->entities.end(),
                               [&](const EntitySpec& e) { return e.name == call.arrow.entity; })) {
       throw std::invalid_argument("history: no entity named \"" + call.arrow.entity + "\" in this scene");
@@ -110,7 +125,9 @@ void SteppedScene::restore(const SceneHistory& history, const std::function<void
         history_.add(call);
         break;
       case SceneCall::Kind::Push: push(call.arrow, call.magnitude); break;
-      case SceneCall::Kind::Rotate: rotate(call.arrow.entity, call.degrees); break;
+      case SceneCall::Kind::Rotate: rotate(call.arrow.entity, call.value); break;
+      case SceneCall::Kind::Timestep: setTimestep(call.value); break;
+      case SceneCall::Kind::Gravity: setGravity(call.value); break;
       case SceneCall::Kind::Impulse: applyImpulse(call.arrow.entity, call.impulse, call.point); break;
     }
   }

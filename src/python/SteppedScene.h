@@ -38,8 +38,12 @@ class SteppedScene {
   void push(const Arrow& arrow, const PushMagnitude& magnitude);
   void rotate(const std::string& entity, double degrees);
   void applyImpulse(const std::string& entity, const Vec3& impulse, const std::optional<Vec3>& point);
+  /// Steps from now on last `seconds`; scenario().settings says so.
+  void setTimestep(double seconds);
+  /// Gravity from now on, m/s^2 along -Y; scenario().settings says so.
+  void setGravity(double g);
 
-  /// The scene as it was built; the history empties.
+  /// The scene as it was built, its settings too; the history empties.
   void reset();
   /// The scene built again with `history`'s calls made on it: the state
   /// they made, bit for bit. Each call is checked as it was when made
@@ -69,6 +73,7 @@ class SteppedScene {
   std::string tooLong(const SceneHistory& history) const;
 
   std::unique_ptr<Scenario> scenario_;
+  Settings built_;  // the settings it was built with
   SimulationMode mode_;
   std::unique_ptr<Simulation> simulation_;
   std::unique_ptr<ScriptPlayer> player_;

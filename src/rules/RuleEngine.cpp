@@ -351,7 +351,7 @@ void RuleEngine::step() {
     noteRest();
   }
   ++steps_;
-  time_ = static_cast<double>(steps_) * dt;
+  time_ = clock_.time(steps_, dt);
   now_ = time_;
   noteRest();
 }
@@ -381,6 +381,15 @@ std::vector<EntityState> RuleEngine::snapshot() const {
     out.push_back(s);
   }
   return out;
+}
+
+}  // namespace tabletop::rules
+
+namespace tabletop::rules {
+
+void RuleEngine::setTimestep(double seconds) {
+  clock_.changeAt(steps_, time_);
+  settings_.timestep = seconds;
 }
 
 }  // namespace tabletop::rules

@@ -10,6 +10,7 @@
 
 #include "core/Settings.h"
 #include "core/Simulation.h"
+#include "core/StepClock.h"
 #include "core/TableSpec.h"
 #include "rules/ContactFinder.h"
 #include "rules/ReportRules.h"
@@ -84,6 +85,8 @@ class RuleEngine : public Simulation {
   void push(const Arrow& arrow, const PushMagnitude& magnitude) override;
   void rotate(const std::string& entity, double degrees) override;
   void step() override;
+  void setTimestep(double seconds) override;
+  void setGravity(double g) override { settings_.gravity = g; }
   double time() const override { return time_; }
   long steps() const override { return steps_; }
   bool allAtRest() const override;
@@ -167,6 +170,7 @@ class RuleEngine : public Simulation {
   double time_ = 0.0;  // at the start of the current step
   double now_ = 0.0;   // within the current step, for events
   long steps_ = 0;
+  StepClock clock_;
 };
 
 }  // namespace tabletop::rules

@@ -122,3 +122,65 @@ def test_impulse_arguments_are_checked():
         with pytest.raises(error, match=words):
             sim.push("A", **kwargs)
     assert sim.velocities.any() == False  # noqa: E712 (nothing changed)
+
+
+def slide(mode, rate, friction=0.3):
+    return {"version": 1, "name": "slide", "table": {"size": [3, 1], "material": {"friction": friction}},
+            "settings": {"timestep": 1 / rate, "duration": 30},
+            "entities": [{"name": "A", "shape": "cube", "size": 0.1, "mass": 2.0, "position": [-1.2, 0.0],
+                          "material": {"friction": 1.0}}]}  # combined with the table's: mu = friction
+
+
+@pytest.mark.parametrize("rate", RATES)
+@pytest.mark.parametrize("g", [1.62, 3.71, 9.81, 24.79])
+def test_gravity_set_between_steps_sets_how_far_a_push_slides(g, rate):
+    """d = v0^2 / (2 mu g), with the gravity set after the scene was built."""
+    sim = tabletop.Simulation(slide("bullet", rate), script=False)
+    sim.step(3)
+    sim.gravity = g
+    assert sim.gravity == g
+    start = sim.positions[0, 0]
+    v0 = 0.8
+    sim.push("A", impulse=2.0 * v0)
+    sim.step(int(2 * v0 / (0.3 * g) * rate) + 2 * rate)
+    assert sim.positions[0, 0] - start == pytest.approx(v0 * v0 / (2 * 0.3 * g), abs=1e-4)  # m
+
+
+@pytest.mark.parametrize("first,second", [(30, 240), (240, 60), (60, 1000)])
+def test_a_timestep_set_mid_flight_goes_on_along_the_same_parabola(first, second):
+    """A ball thrown across the room: x = x0 + v t, y = y0 + u t - g t^2 / 2 at
+    every step, across the change of rate; the clock counts the new steps."""
+    scene = {"version": 1, "name": "throw", "settings": {"timestep": 1 / first, "duration": 5},
+             "entities": [{"name": "A", "shape": "sphere", "size": 0.05, "mass": 1.0, "position": [0, 3, 0],
+                           "velocity": [0.5, 2.0, 0]}]}
+    sim = tabletop.Simulation(scene, script=False)
+    sim.step(first // 10)
+    t1 = sim.time
+    sim.timestep = 1 / second
+    for n in range(1, second // 5):
+        sim.step()
+        assert sim.time == t1 + n * (1 / second)
+        t = sim.time
+        assert sim.positions[0] == pytest.approx([0.5 * t, 3 + 2 * t - G * t * t / 2, 0], abs=1e-9)  # m
+
+
+def test_settings_set_between_steps_are_refused_out_of_range_and_kept_by_states():
+    sim = tabletop.Simulation(slide("bullet", 60), script=False)
+    for name, value, error in [("timestep", 0.0, ValueError), ("timestep", 1.0, ValueError),
+                               ("gravity", -1.0, ValueError), ("gravity", math.nan, ValueError),
+                               ("gravity", "9.81", TypeError)]:
+        with pytest.raises(error):
+            setattr(sim, name, value)
+    assert (sim.timestep, sim.gravity) == (1 / 60, 9.81)
+    sim.gravity = 3.71
+    sim.timestep = 1 / 120
+    sim.push(0, impulse=1.0)
+    sim.step(10)
+    saved = sim.get_state()
+    sim.step(10)
+    sim.gravity = 9.81
+    sim.set_state(saved)
+    assert (sim.timestep, sim.gravity) == (1 / 120, 3.71)
+    assert sim.result()["state_hash"] == saved.state_hash
+    sim.reset()
+    assert (sim.timestep, sim.gravity, sim.steps) == (1 / 60, 9.81, 0)

@@ -33,7 +33,10 @@ def busy(sim, k=7):
             break
         sim.step(10)
     sim.push(0, step=0.15, angle=30.0)
-    sim.step(2 * k)
+    sim.step(k)
+    sim.gravity = 9.0 + k / 10
+    sim.timestep = 1 / (100 + k)
+    sim.step(k)
     sim.rotate(-1, 10.0)
     sim.step(k)
 
@@ -78,7 +81,7 @@ def test_pickled_and_deep_copied_simulations_are_the_same_and_apart(mode):
     busy(sim)
     for other in (pickle.loads(pickle.dumps(sim)), copy.deepcopy(sim), copy.copy(sim)):
         same(sim, other)
-        assert other.timestep == 1 / 60
+        assert other.timestep == sim.timestep and other.gravity == sim.gravity
         other.step(20)  # a copy is its own scene
         assert other.steps == sim.steps + 20
     state = pickle.loads(pickle.dumps(sim.get_state()))

@@ -55,6 +55,8 @@ struct IslandSolverParts {
 class IslandSolver : private IslandSolverParts, public btMLCPSolver {
  public:
   IslandSolver(ContactSolver choice, int rowLimit, double gravity);
+  /// Gravity's magnitude from now on, m/s^2.
+  void setGravity(double gravity) { gravity_ = gravity < 0 ? -gravity : gravity; }
 
   /// Solves one island; a group with no body is skipped. Bullet ends every
   /// island pass with a call for the islands it batched, and with batches

@@ -51,6 +51,12 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   /// impact (0, the default: every contact is reused and no update is
   /// second order).
   void setSmoothAcceleration(double limit) { smoothAcceleration_ = limit; }
+  /// Gravity becomes `g` m/s^2 along -Y for every body. The impulses the
+  /// next solve starts from were found under the old gravity, and a
+  /// resting load scales with it: they are scaled by new / old (dropped
+  /// when the old was 0), so a resting body carries its new weight from
+  /// the first step.
+  void changeGravity(double g);
   double smoothAcceleration() const { return smoothAcceleration_; }
   /// Turns the second-order position update on (off by default).
   void setSecondOrderPositions(bool on) { secondOrder_ = on; }
