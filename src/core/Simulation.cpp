@@ -22,6 +22,11 @@ void Simulation::applyImpulse(const std::string& entity, const Vec3& impulse, co
   push(arrow, {PushMagnitude::Kind::Impulse, std::hypot(impulse.x, impulse.z)});
 }
 
+void Simulation::applyForce(const std::string&, const Vec3&, const Vec3&, const std::optional<Vec3>&) {
+  throw std::invalid_argument(std::string(modeName()) +
+                              " mode: bodies move by the report's pushes alone, not by forces; use mode 'bullet'");
+}
+
 std::vector<Vec3> Simulation::contactPoints() const {
   std::vector<Vec3> points;
   for (const ContactReport& c : contacts()) points.push_back(c.point);

@@ -55,6 +55,14 @@ class Simulation {
   /// rules take only a horizontal push through the centre (report 3.5), as
   /// push() by impulse; anything else throws std::invalid_argument.
   virtual void applyImpulse(const std::string& entity, const Vec3& impulse, const std::optional<Vec3>& point);
+  /// Applies `force` N and `torque` N m to an entity through the next step
+  /// only (as PyBullet's applyExternalForce): the force through the centre
+  /// of mass or, when `point` is given (m, world frame), at that point,
+  /// which adds its moment (r x F, r taken now). Modes that follow the
+  /// report's rules move bodies by pushes alone: they throw
+  /// std::invalid_argument.
+  virtual void applyForce(const std::string& entity, const Vec3& force, const Vec3& torque,
+                          const std::optional<Vec3>& point);
   /// Steps from now on last `seconds` (a checked timestep, ValueRanges.h).
   virtual void setTimestep(double seconds) = 0;
   /// Gravity from now on: `g` m/s^2 along -Y (checked, ValueRanges.h).

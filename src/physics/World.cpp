@@ -330,6 +330,7 @@ void World::step() {
     n = std::min(std::max(n, loaded), settings_.maxSubsteps);
   }
   struck_.clear();
+  if (!loads_.empty()) takeLoads();
   for (int k = 0; k < n; ++k) {
     world_->step(settings_.timestep / n);
     for (DynamicsWorld::Struck pair : world_->struck()) {
@@ -337,9 +338,39 @@ void World::step() {
       struck_.push_back(pair);
     }
   }
+  if (!loads_.empty()) {
+    loads_.clear();
+    world_->setLoads({});
+    updateSmoothAcceleration();
+  }
   ++steps_;
   time_ = clock_.time(steps_, settings_.timestep);
   observe(true);
+}
+
+void World::takeLoads() {
+  double most = 0.0;  // m/s^2
+  for (const DynamicsWorld::Load& load : loads_) {
+    const Tracker& t = trackers_.at(static_cast<std::size_t>(load.body->getUserIndex()));
+    const btVector3 spinUp = load.body->getInvInertiaTensorWorld() * load.torque;
+    most = std::max(most, double(load.force.length() * load.body->getInvMass() + spinUp.length() * t.turningReach));
+  }
+  world_->setSmoothAcceleration(world_->smoothAcceleration() + most);
+  world_->setLoads(loads_);
+}
+
+// The bound on smooth accelerations takes in each load's linear and
+// turning acceleration, so that the step reads the velocity it changes as
+// smooth, not as an impact.
+void World::applyForce(const std::string& name, const Vec3& force, const Vec3& torque,
+                       const std::optional<Vec3>& point) {
+  start();
+  Shape& shape = entity(name);
+  btRigidBody* body = shape.body();
+  btVector3 moment = toBullet(torque);
+  if (point) moment += (toBullet(*point) - body->getCenterOfMassPosition()).cross(toBullet(force));
+  body->activate(true);
+  loads_.push_back({body, toBullet(force), moment});
 }
 
 void World::setTimestep(double seconds) {

@@ -96,6 +96,8 @@ class World : public Simulation {
   void push(const Arrow& arrow, const PushMagnitude& magnitude) override;
   void rotate(const std::string& entity, double degrees) override;
   void step() override;
+  void applyForce(const std::string& entity, const Vec3& force, const Vec3& torque,
+                  const std::optional<Vec3>& point) override;
   void setTimestep(double seconds) override;
   void setGravity(double g) override;
   double time() const override { return time_; }
@@ -133,6 +135,9 @@ class World : public Simulation {
   Shape& entity(const std::string& name);
   void start();
   void updateSmoothAcceleration();
+  // Hands the step the loads applyForce() gave, widening the bound on
+  // smooth accelerations by the largest they add.
+  void takeLoads();
   void addLegsIfReachable();
   // The observer (WorldObserver.cpp), after each step: the contacts, the
   // pairs touching, each entity's support, edge and rest.
@@ -190,6 +195,8 @@ class World : public Simulation {
   std::vector<double> strongest_;
   std::vector<double> currentPush_;
   std::vector<Event> events_;
+  // The forces and torques applied through the next step (applyForce()).
+  std::vector<DynamicsWorld::Load> loads_;
   double entityFriction_ = 0.0;  // the largest friction coefficient of any entity
   double time_ = 0.0;
   long steps_ = 0;

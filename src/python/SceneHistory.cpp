@@ -86,7 +86,13 @@ json SceneHistory::toJson() const {
       case SceneCall::Kind::Timestep: out.push_back({{"call", "timestep"}, {"seconds", c.value}}); break;
       case SceneCall::Kind::Gravity: out.push_back({{"call", "gravity"}, {"g", c.value}}); break;
       case SceneCall::Kind::Impulse: {
-        json p = {{"call", "impulse"}, {"entity", c.arrow.entity}, {"impulse", vec(c.impulse)}};
+        json p = {{"call", "impulse"}, {"entity", c.arrow.entity}, {"impulse", vec(c.vector)}};
+        if (c.point) p["point"] = vec(*c.point);
+        out.push_back(p);
+        break;
+      }
+      case SceneCall::Kind::Load: {
+        json p = {{"call", "load"}, {"entity", c.arrow.entity}, {"force", vec(c.vector)}, {"torque", vec(c.torque)}};
         if (c.point) p["point"] = vec(*c.point);
         out.push_back(p);
         break;
@@ -136,7 +142,13 @@ SceneHistory SceneHistory::fromJson(const json& j) {
     } else if (kind == "impulse") {
       call.kind = SceneCall::Kind::Impulse;
       call.arrow.entity = text(c, "entity", i);
-      call.impulse = vector(c, "impulse", i);
+      call.vector = vector(c, "impulse", i);
+      if (c.contains("point")) call.point = vector(c, "point", i);
+    } else if (kind == "load") {
+      call.kind = SceneCall::Kind::Load;
+      call.arrow.entity = text(c, "entity", i);
+      call.vector = vector(c, "force", i);
+      call.torque = vector(c, "torque", i);
       if (c.contains("point")) call.point = vector(c, "point", i);
     } else {
       refuse(i, "unknown call");

@@ -13,17 +13,18 @@
 namespace tabletop::python {
 
 /// One call that changed a scene from Python: steps taken, the script's
-/// due actions carried out, a push, a turn, an impulse, a new timestep or
-/// gravity.
+/// due actions carried out, a push, a turn, an impulse, a force and torque
+/// for a step, a new timestep or gravity.
 struct SceneCall {
-  enum class Kind { Steps, RunDue, Push, Rotate, Impulse, Timestep, Gravity };
+  enum class Kind { Steps, RunDue, Push, Rotate, Impulse, Load, Timestep, Gravity };
   Kind kind = Kind::Steps;
   long long count = 0;         ///< Steps: how many were taken
-  Arrow arrow;                 ///< Push (its entity names the body of Rotate and Impulse too)
+  Arrow arrow;                 ///< Push (its entity names the body of Rotate, Impulse, Load too)
   PushMagnitude magnitude;     ///< Push
   double value = 0.0;          ///< Rotate: degrees; Timestep: s; Gravity: m/s^2
-  Vec3 impulse;                ///< Impulse, N s
-  std::optional<Vec3> point;   ///< Impulse, m, world frame
+  Vec3 vector;                 ///< Impulse: N s; Load: the force, N
+  Vec3 torque;                 ///< Load, N m
+  std::optional<Vec3> point;   ///< Impulse, Load: where it acts, m, world frame
 
   static SceneCall of(Kind kind, long long count = 0, double value = 0.0) {
     SceneCall call;

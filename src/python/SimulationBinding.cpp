@@ -113,6 +113,20 @@ void push(const py::handle& self, const py::object& entity, const py::object& im
   });
 }
 
+// A force and a torque held through the next step (PyBullet's
+// applyExternalForce and applyExternalTorque).
+void applyForce(const py::handle& self, const py::object& entity, const py::object& force, const py::object& torque,
+                const py::object& point, const char* what) {
+  with(self, [&](SteppedScene& scene) {
+    const std::string& name = checkedEntity(std::string(what) + ": entity", scene.scenario(), entity);
+    const Vec3 f = force.is_none() ? Vec3{} : checkedVector(std::string(what) + ": force", force, ranges::kForceComponent);
+    const Vec3 t = torque.is_none() ? Vec3{} : checkedVector(std::string(what) + ": torque", torque, ranges::kForceComponent);
+    std::optional<Vec3> at;
+    if (!point.is_none()) at = checkedVector(std::string(what) + ": point", point, ranges::kCoordinate);
+    scene.applyForce(name, f, t, at);
+  });
+}
+
 void rotate(const py::handle& self, const py::object& entity, double degrees) {
   with(self, [&](SteppedScene& scene) {
     const std::string& name = checkedEntity("rotate: entity", scene.scenario(), entity);
@@ -172,6 +186,24 @@ void bindSimulation(py::module_& m) {
            "at point [x, y, z] (m, world frame), which sets the body spinning: the velocity changes by J/m and "
            "the spin by I^-1 (r x J). Modes 'compat' and 'rules' take only a horizontal vector through the "
            "centre (ValueError otherwise).")
+      .def(
+          "apply_force",
+          [](const py::handle& self, const py::object& entity, const py::object& force, const py::object& point) {
+            applyForce(self, entity, force, py::none(), point, "apply_force");
+          },
+          py::arg("entity"), py::arg("force"), py::kw_only(), py::arg("point") = py::none(),
+          "Applies a force [x, y, z] (N, each part within +-1e7) to an entity (its name or index) through the next "
+          "step only, as PyBullet's applyExternalForce: through the centre of mass, or at point [x, y, z] (m, world "
+          "frame), which adds its moment r x F. Forces given before a step add up. Mode 'bullet' only "
+          "(ValueError in 'compat' and 'rules', which move bodies by pushes).")
+      .def(
+          "apply_torque",
+          [](const py::handle& self, const py::object& entity, const py::object& torque) {
+            applyForce(self, entity, py::none(), torque, py::none(), "apply_torque");
+          },
+          py::arg("entity"), py::arg("torque"),
+          "Applies a torque [x, y, z] (N m, world frame, each part within +-1e7) to an entity through the next step "
+          "only. Mode 'bullet' only.")
       .def("rotate", &rotate, py::arg("entity"), py::arg("degrees"),
            "Turns an entity (its name or index) about its own vertical axis (the report's Rotate), degrees within "
            "+-1e6.")

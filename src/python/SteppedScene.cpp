@@ -79,7 +79,18 @@ void SteppedScene::applyImpulse(const std::string& entity, const Vec3& impulse, 
   simulation_->applyImpulse(entity, impulse, point);
   SceneCall call = SceneCall::of(SceneCall::Kind::Impulse);
   call.arrow.entity = entity;
-  call.impulse = impulse;
+  call.vector = impulse;
+  call.point = point;
+  history_.add(call);
+}
+
+void SteppedScene::applyForce(const std::string& entity, const Vec3& force, const Vec3& torque,
+                              const std::optional<Vec3>& point) {
+  simulation_->applyForce(entity, force, torque, point);
+  SceneCall call = SceneCall::of(SceneCall::Kind::Load);
+  call.arrow.entity = entity;
+  call.vector = force;
+  call.torque = torque;
   call.point = point;
   history_.add(call);
 }
@@ -101,7 +112,7 @@ void SteppedScene::reset() { build(); }
 void SteppedScene::restore(const SceneHistory& history, const std::function<void()>& between) {
   for (const SceneCall& call : history.calls()) {
     const bool named = call.kind == SceneCall::Kind::Push || call.kind == SceneCall::Kind::Rotate ||
-                       call.kind == SceneCall::Kind::Impulse;
+                       call.kind == SceneCall::Kind::Impulse || call.kind == SceneCall::Kind::Load;
     if (named && std::none_of(scenario_->entities.begin(), scenario_->entities.end(),
                               [&](const EntitySpec& e) { return e.name == call.arrow.entity; })) {
       throw std::invalid_argument("history: no entity named \"" + call.arrow.entity + "\" in this scene");
@@ -128,7 +139,8 @@ void SteppedScene::restore(const SceneHistory& history, const std::function<void
       case SceneCall::Kind::Rotate: rotate(call.arrow.entity, call.value); break;
       case SceneCall::Kind::Timestep: setTimestep(call.value); break;
       case SceneCall::Kind::Gravity: setGravity(call.value); break;
-      case SceneCall::Kind::Impulse: applyImpulse(call.arrow.entity, call.impulse, call.point); break;
+      case SceneCall::Kind::Impulse: applyImpulse(call.arrow.entity, call.vector, call.point); break;
+      case SceneCall::Kind::Load: applyForce(call.arrow.entity, call.vector, call.torque, call.point); break;
     }
   }
 }

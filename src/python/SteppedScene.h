@@ -38,6 +38,8 @@ class SteppedScene {
   void push(const Arrow& arrow, const PushMagnitude& magnitude);
   void rotate(const std::string& entity, double degrees);
   void applyImpulse(const std::string& entity, const Vec3& impulse, const std::optional<Vec3>& point);
+  /// A force and torque on `entity` through the next step.
+  void applyForce(const std::string& entity, const Vec3& force, const Vec3& torque, const std::optional<Vec3>& point);
   /// Steps from now on last `seconds`; scenario().settings says so.
   void setTimestep(double seconds);
   /// Gravity from now on, m/s^2 along -Y; scenario().settings says so.

@@ -38,6 +38,7 @@ inline constexpr Range kGravity{0.0, 100.0, false};      ///< m/s^2
 inline constexpr Range kStep{0.0, 100.0, true};          ///< metres
 inline constexpr Range kImpulse{0.0, 1e6, true};         ///< N s
 inline constexpr Range kImpulseComponent{-1e6, 1e6, false};  ///< N s, one component
+inline constexpr Range kForceComponent{-1e7, 1e7, false};    ///< N or N m, one component
 inline constexpr Range kSpeedTolerance{0.0, 1.0, false};  ///< m/s
 inline constexpr Range kSpeed{-1e3, 1e3, false};         ///< m/s, one component
 inline constexpr Range kSpin{-1e4, 1e4, false};          ///< rad/s, one component

@@ -43,6 +43,16 @@ IslandSolver::Way IslandSolver::chooseWay(btPersistentManifold** manifolds, int 
   for (int m = 0; m < numManifolds; ++m) rows += 3L * manifolds[m]->getNumContacts();
   const bool fits = rows <= rowLimit_;
   if (choice_ == ContactSolver::Dantzig) return fits ? Way::Pivot : Way::Sweep;
+  // A body under an applied load with friction on it is pivoted: held by
+  // friction against a sideways force, a box on its four corners crept
+  // 42 um and sank 53 um in 5 s at 30 Hz under ten sweeps.
+  for (int m = 0; !loaded_.empty() && m < numManifolds; ++m) {
+    const btPersistentManifold* manifold = manifolds[m];
+    if (!loaded_.contains(manifold->getBody0()) && !loaded_.contains(manifold->getBody1())) continue;
+    for (int p = 0; p < manifold->getNumContacts(); ++p) {
+      if (manifold->getContactPoint(p).m_combinedFriction > 0) return fits ? Way::Pivot : Way::LongSweeps;
+    }
+  }
   if (gravity_ == 0) return Way::Sweep;
   bool slides = false;
   bool sunk = false;

@@ -92,6 +92,10 @@ class IslandSolver : private IslandSolverParts, public btMLCPSolver {
   /// is the sweeps', not at its bound where it slides (DynamicsWorld turns
   /// only a pivoted body by its mean spin).
   const BodySet& swept() const { return swept_; }
+  /// The bodies that bear an applied force or torque through the next
+  /// step: an island where one touches with friction is pivoted wherever
+  /// it fits, as a load is.
+  void setLoaded(BodySet bodies) { loaded_ = std::move(bodies); }
   void forgetSwept() { swept_.clear(); }
   /// Whether an island since the last call carried a load but was too
   /// large to pivot, and was given the long sweeps; clears it. Such an
@@ -184,6 +188,7 @@ class IslandSolver : private IslandSolverParts, public btMLCPSolver {
   Way way_ = Way::Sweep;    // how the island being solved is solved
   bool longSweepsTaken_ = false;
   BodySet swept_;
+  BodySet loaded_;          // setLoaded()
   bool counted_ = false;    // the island being solved counts in use_
   bool guessed_ = false;    // the island just solved exactly was solved by the guess
   SolverUse use_;

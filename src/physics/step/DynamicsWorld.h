@@ -58,6 +58,15 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   /// the first step.
   void changeGravity(double g);
   double smoothAcceleration() const { return smoothAcceleration_; }
+  /// A force (N) and torque (N m) on a body, world frame, through a step.
+  struct Load {
+    btRigidBody* body;
+    btVector3 force;
+    btVector3 torque;
+  };
+  /// What acts on bodies besides gravity through the next step(s), applied
+  /// in every part where gravity is.
+  void setLoads(std::vector<Load> loads);
   /// Turns the second-order position update on (off by default).
   void setSecondOrderPositions(bool on) { secondOrder_ = on; }
 
@@ -242,6 +251,7 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   std::vector<Slip> mayTurn_;   // those whose slip may turn in it
   BodySet stopping_;
   BodySet touchingAnother_;  // slipsThatMayTurn's scratch
+  std::vector<Load> loads_;  // setLoads()
   CarriedImpulses carried_;  // per non-static body, at the step's start
   PartStart partStart_;      // the part's start, while a slip may turn in it
   // The contact whose slip turned round or stopped where the last part was

@@ -20,6 +20,7 @@ void FreeFlight::find(const btAlignedObjectArray<btRigidBody*>& bodies, btDispat
   for (int i = 0; i < bodies.size(); ++i) {
     btRigidBody* body = bodies[i];
     if (!body->isActive() || body->isStaticOrKinematicObject() || touching_.contains(body)) continue;
+    if (!body->getTotalTorque().isZero()) continue;  // a torque acts: not free
     const btVector3 inverse = body->getInvInertiaDiagLocal();
     if (!(inverse.x() > 0 && inverse.y() > 0 && inverse.z() > 0)) continue;
     free_.push_back({body, i, body->getFlags()});

@@ -10,8 +10,8 @@
 namespace tabletop {
 
 /// The bodies that touch nothing in a part (no contact point of any
-/// manifold, so no row of the solver acts on them) turn as a free rigid
-/// body does: their spin and orientation follow Euler's equations' exact
+/// manifold, so no row of the solver acts on them) and bear no applied
+/// torque turn as a free rigid body does: their spin and orientation follow Euler's equations' exact
 /// solution (core/FreeRotation.h) from the part's start, in place of
 /// Bullet's rotation and its gyroscopic term, which lost 7.6% of a tumbling
 /// box's energy in 10 s at 60 Hz (docs/free-rotation.md). Their centres,

@@ -39,7 +39,12 @@ void DynamicsWorld::saveStartVelocities() {
 
 // Bodies touching nothing turn as the free rigid body does (FreeFlight.h):
 // their spin set before the integration, their orientation after it.
+// A body under a torque (setLoads()) turns by its mean spin, second order:
+// its spin changes smoothly through the part.
 void DynamicsWorld::integrate(const Part& part) {
+  for (const Load& load : loads_) {
+    if (!load.torque.fuzzyZero()) meanTurn_.insert(load.body);
+  }
   freeFlight_.start(startSpins_, part.length);
   integrateMotions(part);
   freeFlight_.finish();

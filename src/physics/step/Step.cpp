@@ -106,7 +106,19 @@ void DynamicsWorld::startPart(Part& part) {
   noteKicked();
   if (smoothAcceleration_ > 0) saveStartVelocities();
   btDiscreteDynamicsWorld::applyGravity();
+  for (const Load& load : loads_) {
+    load.body->applyCentralForce(load.force);
+    load.body->applyTorque(load.torque);
+  }
   applyRollingResistance(part);
+}
+
+void DynamicsWorld::setLoads(std::vector<Load> loads) {
+  loads_ = std::move(loads);
+  if (!islandSolver_) return;
+  BodySet loaded;
+  for (const Load& load : loads_) loaded.insert(load.body);
+  islandSolver_->setLoaded(std::move(loaded));
 }
 
 void DynamicsWorld::countWork() {
