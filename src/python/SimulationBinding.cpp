@@ -139,12 +139,14 @@ py::array_t<std::uint8_t> render(const py::handle& self, const py::object& width
   return with(self, [&](SteppedScene& scene) {
     const int w = static_cast<int>(checkedInteger("render: width", width, 1, kMaxImageSide));
     const int h = static_cast<int>(checkedInteger("render: height", height, 1, kMaxImageSide));
-    const auto chosen = CameraChoice::forScene(camera, scene.scenario());
+    // "fit:now" is "fit" framing the scene as it is now, not its run.
+    const bool now = camera == "fit:now";
+    const auto chosen = CameraChoice::forScene(now ? "fit" : camera, scene.scenario());
     if (const auto* why = std::get_if<std::string>(&chosen)) throw py::value_error("render: camera: " + *why);
     Image image;
     {
       const py::gil_scoped_release nogil;
-      image = scene.render(w, h, std::get<CameraChoice>(chosen), arrow);
+      image = scene.render(w, h, std::get<CameraChoice>(chosen), arrow, now);
     }
     py::array_t<std::uint8_t> out({h, w, 3});
     std::copy(image.rgb.begin(), image.rgb.end(), out.mutable_data());
@@ -210,8 +212,10 @@ void bindSimulation(py::module_& m) {
       .def("render", &render, py::arg("width") = 640, py::arg("height") = 480, py::kw_only(),
            py::arg("camera") = "fit", py::arg("arrow") = true,
            "The scene now, drawn headless (OSMesa) and anti-aliased, as a NumPy array of shape (height, width, 3), "
-           "uint8 RGB, top row first; each side 1 to 8192 pixels. camera is render's --camera: fit (the scene as it "
-           "is now), front, corner, side, top, follow:NAME or 'EX,EY,EZ:TX,TY,TZ'.")
+           "uint8 RGB, top row first; each side 1 to 8192 pixels. camera is render's --camera, with the same "
+           "meaning: fit (the default: the table and all the scene's run reaches, its script played from the start "
+           "to its end, found once by running a copy, and the scene now; frames in a loop keep this camera), "
+           "front, corner, side, top, follow:NAME or 'EX,EY,EZ:TX,TY,TZ'; and fit:now, the scene as it is now.")
       .def("close", [](const py::handle& self) { initialised(self).close(); },
            "Frees the scene (waiting for a call running in another thread); every later call but close() raises "
            "RuntimeError.")

@@ -158,7 +158,29 @@ std::string SteppedScene::unsaveable() const {
   return {};
 }
 
-Image SteppedScene::render(int width, int height, const CameraChoice& camera, bool arrow) const {
+// A run that stops early (divergence, the work limit) frames what it
+// reached.
+SceneExtent SteppedScene::fittedExtent(const std::vector<EntityState>& now) const {
+  if (!runExtent_) {
+    Scenario scenario = *scenario_;
+    scenario.settings = built_;
+    SteppedScene trial(std::move(scenario), mode_, true);
+    SceneExtent extent = SceneExtent::of(*scenario_, trial.simulation().snapshot());
+    try {
+      while (!trial.finished()) {
+        trial.player_->step();
+        extent.add(sceneBounds(*scenario_, trial.simulation().snapshot()));
+      }
+    } catch (const std::exception&) {
+    }
+    runExtent_ = extent;
+  }
+  SceneExtent extent = *runExtent_;
+  extent.add(sceneBounds(*scenario_, now));
+  return extent;
+}
+
+Image SteppedScene::render(int width, int height, const CameraChoice& camera, bool arrow, bool fitNow) const {
   const std::vector<EntityState> states = simulation_->snapshot();
   if (!frames_ || frames_->width() != width || frames_->height() != height) {
     frames_.reset();
@@ -167,7 +189,10 @@ Image SteppedScene::render(int width, int height, const CameraChoice& camera, bo
   DrawOptions options;
   options.arrow = arrow;
   return frames_->draw(makeDrawList(*scenario_, states, player_->arrow(), {}, options),
-                     cameraFor(camera, *scenario_, states, SceneExtent::of(*scenario_, states), double(width) / height));
+                     cameraFor(camera, *scenario_, states,
+                               fitNow || camera.kind != CameraChoice::Kind::Fit ? SceneExtent::of(*scenario_, states)
+                                                                                : fittedExtent(states),
+                               double(width) / height));
 }
 
 RunResult SteppedScene::result() const { return outcomeNow(*scenario_, scenario_->settings, *simulation_); }

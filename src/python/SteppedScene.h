@@ -58,8 +58,14 @@ class SteppedScene {
   /// or too many calls), or empty when it can.
   std::string unsaveable() const;
 
-  /// The scene now, drawn headless: width x height RGB, top row first.
-  Image render(int width, int height, const CameraChoice& camera, bool arrow) const;
+  /// The scene now, drawn headless: width x height RGB, top row first. A
+  /// fitted camera frames fittedExtent(), or with `fitNow` the scene now.
+  Image render(int width, int height, const CameraChoice& camera, bool arrow, bool fitNow = false) const;
+  /// What a fitted camera frames: the table and everything the scene's run
+  /// reaches as its script plays it from the start to its end (found once,
+  /// by running a copy, as render's first playback does), and the
+  /// entities at `now`. A frame in a loop so keeps its camera.
+  SceneExtent fittedExtent(const std::vector<EntityState>& now) const;
   RunResult result() const;
 
   const Scenario& scenario() const { return *scenario_; }
@@ -84,6 +90,7 @@ class SteppedScene {
   // The last render's context, kept for the next of the same size: making
   // one cost 20-50 ms, more than the frame.
   mutable std::unique_ptr<HeadlessFrames> frames_;
+  mutable std::optional<SceneExtent> runExtent_;  // fittedExtent()'s run, once found
 };
 
 }  // namespace tabletop::python

@@ -133,6 +133,22 @@ def test_frames_of_one_size_in_a_loop_are_each_the_scene_as_it_is(tmp_path):
     assert not np.array_equal(frames[0], frames[-1])  # cube A moved
 
 
+@pytest.mark.parametrize("scene", ["example2_two_cubes", "example4_two_spheres"])
+def test_a_fitted_camera_frames_the_whole_run_so_a_loop_of_frames_keeps_still(scene):
+    """fit frames all the run reaches from its first frame on, as render does: between the first frame and the
+    last no more pixels change than under a fixed preset camera (only the bodies'). fit:now frames the scene as
+    it is, so it zooms as bodies leave."""
+    def changed(camera):
+        sim = tabletop.Simulation(scene)
+        first = sim.render(160, 120, camera=camera).astype(int)
+        sim.run_to_end()
+        last = sim.render(160, 120, camera=camera).astype(int)
+        return np.mean(np.any(first != last, axis=2))  # the share of pixels that changed
+    still, fixed, moving = changed("fit"), changed("corner"), changed("fit:now")
+    assert still <= 1.5 * fixed + 0.01
+    assert moving > 2 * still
+
+
 def test_write_png_saves_a_frame_whole_and_refuses_what_is_not_one(tmp_path, tabletop_bin):
     sim = tabletop.Simulation(str(SCENARIOS / "example2_two_cubes.json"))
     image = sim.render(64, 48, camera="corner")
