@@ -22,4 +22,13 @@ Image HeadlessFrames::draw(DrawList list, const Camera& camera) const {
   return renderer_.readPixels(context_.width(), context_.height()).shrunk(scale_);
 }
 
+BodyImage HeadlessFrames::drawBodies(const DrawList& list, const Camera& camera) const {
+  context_.makeCurrent();
+  struct Release {
+    const OsMesaContext& context;
+    ~Release() { context.release(); }
+  } release{context_};
+  return renderer_.drawLabels(list, camera, width_, height_);
+}
+
 }  // namespace tabletop

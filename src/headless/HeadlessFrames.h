@@ -22,6 +22,10 @@ class HeadlessFrames {
   /// `list` seen by `camera`, width x height pixels, top row first, on
   /// the calling thread (one thread at a time).
   Image draw(DrawList list, const Camera& camera) const;
+  /// Each pixel's body and depth for the same frame (GlRenderer::drawLabels),
+  /// drawn at the frame's own size in a corner of the larger one: a label
+  /// is no average, so each pixel shows what its centre's ray meets.
+  BodyImage drawBodies(const DrawList& list, const Camera& camera) const;
   int width() const { return width_; }
   int height() const { return height_; }
 

@@ -134,8 +134,10 @@ void rotate(const py::handle& self, const py::object& entity, double degrees) {
   });
 }
 
-py::array_t<std::uint8_t> render(const py::handle& self, const py::object& width, const py::object& height,
-                                 const std::string& camera, bool arrow) {
+// The RGB frame alone, or with depth and segmentation images: a tuple of
+// what was asked for, in that order.
+py::object render(const py::handle& self, const py::object& width, const py::object& height, const std::string& camera,
+                  bool arrow, bool depth, bool segmentation) {
   return with(self, [&](SteppedScene& scene) {
     const int w = static_cast<int>(checkedInteger("render: width", width, 1, kMaxImageSide));
     const int h = static_cast<int>(checkedInteger("render: height", height, 1, kMaxImageSide));
@@ -144,13 +146,28 @@ py::array_t<std::uint8_t> render(const py::handle& self, const py::object& width
     const auto chosen = CameraChoice::forScene(now ? "fit" : camera, scene.scenario());
     if (const auto* why = std::get_if<std::string>(&chosen)) throw py::value_error("render: camera: " + *why);
     Image image;
+    BodyImage bodies;
+    const bool more = depth || segmentation;
     {
       const py::gil_scoped_release nogil;
-      image = scene.render(w, h, std::get<CameraChoice>(chosen), arrow, now);
+      image = scene.render(w, h, std::get<CameraChoice>(chosen), arrow, now, more ? &bodies : nullptr);
     }
-    py::array_t<std::uint8_t> out({h, w, 3});
-    std::copy(image.rgb.begin(), image.rgb.end(), out.mutable_data());
-    return out;
+    py::array_t<std::uint8_t> rgb({h, w, 3});
+    std::copy(image.rgb.begin(), image.rgb.end(), rgb.mutable_data());
+    if (!more) return py::object(rgb);
+    py::list out;
+    out.append(rgb);
+    if (depth) {
+      py::array_t<float> d({h, w});
+      std::copy(bodies.depth.begin(), bodies.depth.end(), d.mutable_data());
+      out.append(d);
+    }
+    if (segmentation) {
+      py::array_t<std::int32_t> s({h, w});
+      std::copy(bodies.labels.begin(), bodies.labels.end(), s.mutable_data());
+      out.append(s);
+    }
+    return py::object(py::tuple(out));
   });
 }
 
@@ -210,12 +227,17 @@ void bindSimulation(py::module_& m) {
            "Turns an entity (its name or index) about its own vertical axis (the report's Rotate), degrees within "
            "+-1e6.")
       .def("render", &render, py::arg("width") = 640, py::arg("height") = 480, py::kw_only(),
-           py::arg("camera") = "fit", py::arg("arrow") = true,
+           py::arg("camera") = "fit", py::arg("arrow") = true, py::arg("depth") = false,
+           py::arg("segmentation") = false,
            "The scene now, drawn headless (OSMesa) and anti-aliased, as a NumPy array of shape (height, width, 3), "
            "uint8 RGB, top row first; each side 1 to 8192 pixels. camera is render's --camera, with the same "
            "meaning: fit (the default: the table and all the scene's run reaches, its script played from the start "
            "to its end, found once by running a copy, and the scene now; frames in a loop keep this camera), "
-           "front, corner, side, top, follow:NAME or 'EX,EY,EZ:TX,TY,TZ'; and fit:now, the scene as it is now.")
+           "front, corner, side, top, follow:NAME or 'EX,EY,EZ:TX,TY,TZ'; and fit:now, the scene as it is now. With "
+           "depth or segmentation, a tuple: the RGB frame, then each asked for, as PyBullet's getCameraImage: depth, "
+           "float32 (height, width), metres from the camera along its view axis (inf where nothing is); "
+           "segmentation, int32 (height, width), each pixel's body: the entity's index in the arrays, -2 the table, "
+           "-3 the ground, -1 nothing.")
       .def("close", [](const py::handle& self) { initialised(self).close(); },
            "Frees the scene (waiting for a call running in another thread); every later call but close() raises "
            "RuntimeError.")

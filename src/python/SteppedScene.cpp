@@ -180,7 +180,8 @@ SceneExtent SteppedScene::fittedExtent(const std::vector<EntityState>& now) cons
   return extent;
 }
 
-Image SteppedScene::render(int width, int height, const CameraChoice& camera, bool arrow, bool fitNow) const {
+Image SteppedScene::render(int width, int height, const CameraChoice& camera, bool arrow, bool fitNow,
+                           BodyImage* bodies) const {
   const std::vector<EntityState> states = simulation_->snapshot();
   if (!frames_ || frames_->width() != width || frames_->height() != height) {
     frames_.reset();
@@ -188,11 +189,14 @@ Image SteppedScene::render(int width, int height, const CameraChoice& camera, bo
   }
   DrawOptions options;
   options.arrow = arrow;
-  return frames_->draw(makeDrawList(*scenario_, states, player_->arrow(), {}, options),
-                     cameraFor(camera, *scenario_, states,
-                               fitNow || camera.kind != CameraChoice::Kind::Fit ? SceneExtent::of(*scenario_, states)
-                                                                                : fittedExtent(states),
-                               double(width) / height));
+  const DrawList list = makeDrawList(*scenario_, states, player_->arrow(), {}, options);
+  const Camera view = cameraFor(
+      camera, *scenario_, states,
+      fitNow || camera.kind != CameraChoice::Kind::Fit ? SceneExtent::of(*scenario_, states) : fittedExtent(states),
+      double(width) / height);
+  Image image = frames_->draw(list, view);
+  if (bodies) *bodies = frames_->drawBodies(list, view);
+  return image;
 }
 
 RunResult SteppedScene::result() const { return outcomeNow(*scenario_, scenario_->settings, *simulation_); }

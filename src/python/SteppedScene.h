@@ -60,7 +60,9 @@ class SteppedScene {
 
   /// The scene now, drawn headless: width x height RGB, top row first. A
   /// fitted camera frames fittedExtent(), or with `fitNow` the scene now.
-  Image render(int width, int height, const CameraChoice& camera, bool arrow, bool fitNow = false) const;
+  /// With `bodies`, the same frame's bodies and depths (BodyImage) too.
+  Image render(int width, int height, const CameraChoice& camera, bool arrow, bool fitNow = false,
+               BodyImage* bodies = nullptr) const;
   /// What a fitted camera frames: the table and everything the scene's run
   /// reaches as its script plays it from the start to its end (found once,
   /// by running a copy, as render's first playback does), and the

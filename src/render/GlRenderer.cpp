@@ -293,11 +293,23 @@ void GlRenderer::drawShadows(const DrawList& list) const {
   gl_.Enable(GL_LIGHTING);
 }
 
+// Read as RGBA, the framebuffer's own layout (Mesa converts to RGB pixel
+// by pixel, slower than the copy here), rows flipped on the way: OpenGL's
+// first row is the bottom one.
 Image GlRenderer::readPixels(int width, int height) const {
   Image image(width, height);
+  std::vector<std::uint8_t> rgba(static_cast<std::size_t>(width) * height * 4);
   gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);
-  gl_.ReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, image.rgb.data());
-  image.flipRows();  // OpenGL's first row is the bottom one
+  gl_.ReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  for (int row = 0; row < height; ++row) {
+    const std::uint8_t* from = &rgba[static_cast<std::size_t>(height - 1 - row) * width * 4];
+    std::uint8_t* to = &image.rgb[static_cast<std::size_t>(row) * width * 3];
+    for (int c = 0; c < width; ++c) {
+      to[3 * c] = from[4 * c];
+      to[3 * c + 1] = from[4 * c + 1];
+      to[3 * c + 2] = from[4 * c + 2];
+    }
+  }
   return image;
 }
 

@@ -2,6 +2,7 @@
 
 #include "draw/Camera.h"
 #include "draw/DrawList.h"
+#include "image/BodyImage.h"
 #include "image/Image.h"
 #include "render/GlFunctions.h"
 
@@ -27,6 +28,11 @@ class GlRenderer {
 
   /// The viewport's pixels, top row first.
   Image readPixels(int width, int height) const;
+  /// Each pixel's body and depth (BodyImage) for `list` seen by `camera`:
+  /// the solids drawn again, flat and in label colours (no light, shadow,
+  /// arrow or contact points), into the current framebuffer
+  /// (GlLabels.cpp).
+  BodyImage drawLabels(const DrawList& list, const Camera& camera, int width, int height) const;
 
  private:
   void setUpLight(const DrawList& list) const;

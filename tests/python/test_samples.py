@@ -1,5 +1,6 @@
 """Every sample output in the README and docs is what the program prints (docs/make-samples.py writes them)."""
 import importlib.util
+import re
 
 import pytest
 
@@ -50,3 +51,18 @@ def test_the_work_weights_in_limits_md_are_the_headers():
     page = (SOURCE / "docs" / "limits.md").read_text()
     for key, weight in zip(make_work.KEYS, make_work.weights_in_header()):
         assert f"| {key} | {weight:g} |" in page, key
+
+
+def test_the_render_times_in_library_md_are_the_scripts():
+    """docs/library.md's frame times are docs/make-render-times.py's table: a row for each size it measures, with
+    the goal it names, and its own closing line."""
+    import sys
+    sys.path.insert(0, str(SOURCE / "docs"))
+    spec = importlib.util.spec_from_file_location("make_render_times", SOURCE / "docs" / "make-render-times.py")
+    script = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(script)
+    page = (SOURCE / "docs" / "library.md").read_text()
+    block = page.split("<!-- render-times: begin -->")[1].split("<!-- render-times: end -->")[0]
+    for width, height, goal in script.SIZES:
+        assert re.search(rf"\| {width} x {height} \| [0-9.]+ \| [0-9.]+ \| {goal:g} \|", block), (width, height)
+    assert "by `docs/make-render-times.py`" in block
