@@ -174,8 +174,10 @@ void bindSimulationStates(py::class_<SimulationObject>& simulation) {
           "state is bit for bit the same; it costs the steps replayed. Ctrl-C stops it between steps.")
       .def("copy", &copied, "A new Simulation in the same state, bit for bit (the calls made on this one are made "
                             "again on a fresh build of the scene).")
-      .def("__copy__", &copied)
-      .def("__deepcopy__", [](const py::handle& self, const py::handle&) { return copied(self); })
+      .def("__copy__", &copied, "copy.copy(sim): as copy().")
+      .def(
+          "__deepcopy__", [](const py::handle& self, const py::handle&) { return copied(self); }, py::arg("memo"),
+          "copy.deepcopy(sim): as copy(); a Simulation shares nothing with its copy.")
       .def("__getstate__",
            [](const py::handle& self) {
              SimulationObject& object = initialised(self);
@@ -185,7 +187,8 @@ void bindSimulationStates(py::class_<SimulationObject>& simulation) {
                if (!why.empty()) throw std::runtime_error("Simulation: cannot be pickled: " + why);
                return py::make_tuple(origin, scene.history().toJson().dump(), hashOf(scene));
              });
-           })
+           },
+           "For pickle: the scene's origin, the calls made since it was built, and the state's hash.")
       .def("__setstate__", [](const py::handle& self, const py::tuple& saved) {
         if (saved.size() != 3 || !py::isinstance<py::tuple>(saved[0]) || !py::isinstance<py::str>(saved[1]) ||
             !py::isinstance<py::str>(saved[2])) {
@@ -193,7 +196,7 @@ void bindSimulationStates(py::class_<SimulationObject>& simulation) {
         }
         restoreInto(self, saved[0].cast<py::tuple>(), historyFrom(saved[1].cast<std::string>()),
                     saved[2].cast<std::string>());
-      });
+      }, "For pickle: builds the scene again and makes the calls; the state must come back to its hash.");
 }
 
 }  // namespace tabletop::python

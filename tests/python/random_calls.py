@@ -12,6 +12,7 @@ Prints a JSON count of the outcomes by kind.
 """
 import json
 import math
+import pickle
 import random
 import sys
 
@@ -81,7 +82,7 @@ def check_array(a, columns, n):
 
 def one_call(rng, sim):
     """One random call on `sim` (or the module); returns the Simulation to go on with."""
-    what = rng.randrange(20)
+    what = rng.randrange(26)
     if what < 5:
         sim.step(rng.choice(COUNTS))
     elif what < 9:
@@ -123,6 +124,30 @@ def one_call(rng, sim):
         assert isinstance(result["complete"], bool)
     elif what == 18:
         tabletop.scene(hostile_scene(rng))
+    elif what == 20:
+        saved = sim.get_state()
+        sim.step(rng.randrange(20))
+        sim.set_state(saved)
+        assert sim.result()["state_hash"] == saved.state_hash, "a state did not come back"
+    elif what == 21:
+        twin = pickle.loads(pickle.dumps(sim)) if rng.random() < 0.5 else sim.copy()
+        assert twin.result()["state_hash"] == sim.result()["state_hash"], "a copy is not the same"
+    elif what == 22:
+        vector = lambda: [rng.choice(NUMBERS) for _ in range(rng.choice([3, 3, 3, 2]))]  # noqa: E731
+        sim.push(rng.choice(NAMES + [0, -1, 7]), impulse=vector(), **keywords(point=pick(rng, [vector()], 0.5)))
+    elif what == 23:
+        vector = [rng.choice(NUMBERS) for _ in range(3)]
+        if rng.random() < 0.5:
+            sim.apply_force(rng.choice(NAMES + [0, -1]), vector, **keywords(point=pick(rng, [vector], 0.5)))
+        else:
+            sim.apply_torque(rng.choice(NAMES + [0, -1]), vector)
+    elif what == 24:
+        setattr(sim, rng.choice(["timestep", "gravity"]), rng.choice(NUMBERS + [1 / 60, 9.81, 1.62]))
+    elif what == 25:
+        assert all(len(c.point) == 3 and c.b in ("table", "ground", *sim.names) for c in sim.contacts)
+        if rng.random() < 0.3:
+            sim.reset()
+            assert sim.steps == 0
     else:
         uninitialised = tabletop.Simulation.__new__(tabletop.Simulation)
         rng.choice([lambda: uninitialised.step(1), lambda: uninitialised.positions,
