@@ -4,6 +4,7 @@
 #include <string>
 
 #include "core/DirectionDef.h"
+#include "core/Vec3.h"
 
 namespace tabletop {
 
@@ -15,6 +16,9 @@ struct Arrow {
   std::string entity;
   std::optional<DirectionDef> face;  ///< the face pushed, if given by face
   double angleDegrees = 0.0;         ///< world angle when `face` is empty
+  /// Where the push acts, m, in the body's frame from its centre (turning
+  /// with it); none: the report's push, through the centre of mass.
+  std::optional<Vec3> at = std::nullopt;
 
   /// The push's world angle (report 3.8) for an entity whose faces are
   /// turned by `entityYawDegrees` (0 for a sphere, whose faces do not exist).

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/Angle.h"
+#include "core/Quat.h"
 
 namespace tabletop {
 namespace {
@@ -67,7 +68,12 @@ DrawArrow arrowFor(const Arrow& arrow, const EntitySpec& spec, const EntityState
   const DrawShape d = shapeOf(spec, state);
   const Vec3 dir = pushDirection(arrow.worldAngleDegrees(spec.geometry.kind() == ShapeKind::Sphere ? 0.0 : state.yawDegrees));
   DrawArrow a;
-  a.head = state.position - dir * (reach(d, state, dir) + kArrowGap);
+  if (arrow.at) {
+    const auto& q = state.orientation;
+    a.head = state.position + Quat{q[0], q[1], q[2], q[3]}.rotate(*arrow.at) - dir * kArrowGap;
+  } else {
+    a.head = state.position - dir * (reach(d, state, dir) + kArrowGap);
+  }
   a.tail = a.head - dir * (1.2 * sizeOf(d));
   a.radius = std::clamp(0.08 * sizeOf(d), 0.002, 0.02);
   return a;

@@ -220,7 +220,8 @@ double World::pushImpulse(const Arrow& arrow, const PushMagnitude& magnitude) {
 // Report 3.5: a cube is pushed at the centre of a face, perpendicular to it;
 // a sphere through its centre. Both lines of action pass through the centre
 // of mass, so the push is a central impulse (arm x impulse is zero for
-// parallel vectors; computing it would only add rounding).
+// parallel vectors; computing it would only add rounding). A push `at` a
+// point of the body acts there, and sets it spinning.
 void World::push(const Arrow& arrow, const PushMagnitude& magnitude) {
   start();
   Shape& shape = entity(arrow.entity);
@@ -228,7 +229,13 @@ void World::push(const Arrow& arrow, const PushMagnitude& magnitude) {
   const double angle = arrow.worldAngleDegrees(shape.hasFaces() ? shape.yawDegrees() : 0.0);
   const btVector3 direction = toBullet(pushDirection(angle));
 
-  shape.body()->applyCentralImpulse(direction * impulse);
+  btRigidBody* body = shape.body();
+  if (arrow.at) {
+    const btVector3 arm = body->getWorldTransform().getBasis() * toBullet(*arrow.at);
+    body->applyImpulse(direction * impulse, arm + shape.position() - body->getCenterOfMassPosition());
+  } else {
+    body->applyCentralImpulse(direction * impulse);
+  }
 
   Event e;
   e.type = EventType::Push;

@@ -300,6 +300,10 @@ void RuleEngine::push(const Arrow& arrow, const PushMagnitude& magnitude) {
   const std::size_t i = index(arrow.entity);
   RuleBody& b = bodies_[i];
   Motion& m = motion_[i];
+  if (arrow.at) {
+    throw std::invalid_argument("the report's pushes act through the centre (report 3.5): a push 'at' a point "
+                                "needs mode bullet");
+  }
   if (magnitude.kind != PushMagnitude::Kind::Step) {
     throw std::invalid_argument("the report's rules move entities by steps: give the push a 'step' in metres");
   }

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -9,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/EnumNames.h"
+#include "core/Vec3.h"
 #include "core/Text.h"
 #include "scenario/JsonLocator.h"
 #include "scenario/ScenarioError.h"
@@ -110,6 +112,16 @@ class Fields {
       return fallback;
     }
     return v->get<bool>();
+  }
+
+  // The key's array of three numbers, each within `range`; none when it is
+  // absent or wrong (a problem then).
+  std::optional<Vec3> vec3(const std::string& key, const Range& range) {
+    const json* v = get(key, false);
+    if (!v) return std::nullopt;
+    const std::vector<double> c = numbers(*v, at(key), 3, 3, range);
+    if (c.size() != 3) return std::nullopt;
+    return Vec3{c[0], c[1], c[2]};
   }
 
   // A fixed-length array of numbers; empty on error.

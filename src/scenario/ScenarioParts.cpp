@@ -172,14 +172,8 @@ EntitySpec readEntity(const json& j, const std::string& path, const NameIndex& e
   e.material = readMaterial(f, "material", e.material, problems);
   // The motion it starts with (full physics only; the report's rules start
   // every entity at rest).
-  const auto vector3 = [&](const char* key, const Range& range, Vec3& into) {
-    if (const json* v = f.get(key, false)) {
-      const auto c = f.numbers(*v, f.at(key), 3, 3, range);
-      if (c.size() == 3) into = {c[0], c[1], c[2]};
-    }
-  };
-  vector3("velocity", kSpeed, e.velocity);
-  vector3("spin", kSpin, e.spin);
+  e.velocity = f.vec3("velocity", kSpeed).value_or(e.velocity);
+  e.spin = f.vec3("spin", kSpin).value_or(e.spin);
   f.finish();
   return e;
 }
@@ -221,6 +215,12 @@ Action readAction(const json& j, const std::string& path, const NameIndex& entit
     if (byStep) a.magnitude = {PushMagnitude::Kind::Step, p.number("step", kStep, 0.0)};
     if (byImpulse) {
       a.magnitude = {PushMagnitude::Kind::Impulse, p.number("impulse", kImpulse, 0.0)};
+    }
+    if (p.has("at")) {
+      a.arrow.at = p.vec3("at", kLengthOffset);
+      if (p.valid() && byStep) {
+        p.fail(p.at("at"), "expected 'impulse' with 'at': a step is the travel of a push through the centre");
+      }
     }
     p.finish();
   }

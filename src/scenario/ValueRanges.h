@@ -28,6 +28,7 @@ inline constexpr Range kNonNegative{0.0, kInf, false};
 inline constexpr Range kUnitInterval{0.0, 1.0, false};
 inline constexpr Range kLength{1e-3, 1e3, false};        ///< metres: sizes, the table
 inline constexpr Range kCoordinate{-1e4, 1e4, false};    ///< metres from the origin
+inline constexpr Range kLengthOffset{-1e3, 1e3, false};  ///< metres from a body's centre, one component
 inline constexpr Range kMass{1e-4, 1e5, false};          ///< kg
 inline constexpr Range kAngle{-1e6, 1e6, false};         ///< degrees
 inline constexpr Range kFriction{0.0, 10.0, false};

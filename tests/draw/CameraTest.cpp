@@ -121,6 +121,31 @@ TEST(SceneDrawing, ArrowHeadTouchesThePushedFace) {
   EXPECT_GT(turned.tail.z, turned.head.z);
 }
 
+// A push "at" a point of the body is drawn with its head 5 mm short of that
+// point, the point turned with the body: at (-0.05, 0.02, 0.03) on a cube
+// turned 90 degrees about +Y, the point is (0.03, 0.02, 0.05) from the
+// centre (x' = x cos + z sin, z' = -x sin + z cos); pushed on its Left
+// face, the arrow points along -Z.
+TEST(SceneDrawing, ArrowHeadIsAtThePointAPushActsAt) {
+  EntitySpec cube;
+  cube.name = "A";
+  cube.geometry = ShapeGeometry::cube(0.1);
+  EntityState state;
+  state.position = {0.2, 0.8, -0.1};
+  state.yawDegrees = 90.0;
+  const double h = std::sqrt(0.5);
+  state.orientation = {h, 0.0, h, 0.0};
+  Arrow arrow;
+  arrow.entity = "A";
+  arrow.face = DirectionDef::Left;
+  arrow.at = Vec3{-0.05, 0.02, 0.03};
+  const DrawArrow a = arrowFor(arrow, cube, state);
+  EXPECT_NEAR(a.head.x, 0.2 + 0.03, 1e-12);
+  EXPECT_NEAR(a.head.y, 0.8 + 0.02, 1e-12);
+  EXPECT_NEAR(a.head.z, -0.1 + 0.05 + 0.005, 1e-12);
+  EXPECT_GT(a.tail.z, a.head.z);
+}
+
 }  // namespace
 }  // namespace tabletop
 

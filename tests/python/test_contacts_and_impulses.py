@@ -184,3 +184,51 @@ def test_settings_set_between_steps_are_refused_out_of_range_and_kept_by_states(
     assert sim.result()["state_hash"] == saved.state_hash
     sim.reset()
     assert (sim.timestep, sim.gravity, sim.steps) == (1 / 60, 9.81, 0)
+
+
+def struck(size, mass, rate, yaw, push):
+    scene = one_box(size, mass, rate, 0.0, yaw)
+    scene["script"] = [{"t": 0, "push": push}]
+    return scene
+
+
+def turn(yaw_degrees):
+    """Body to world about +Y by the yaw (x' = x cos + z sin, z' = -x sin + z cos)."""
+    c, s = math.cos(math.radians(yaw_degrees)), math.sin(math.radians(yaw_degrees))
+    return np.array([[c, 0, s], [0, 1, 0], [-s, 0, c]])
+
+
+@pytest.mark.parametrize("rate", RATES)
+@pytest.mark.parametrize("mass,size", BOXES)
+@pytest.mark.parametrize("yaw", [0.0, 30.0, -75.0])
+@pytest.mark.parametrize("push", [{"direction": "Left", "impulse": 0.3, "at": [-0.5, 0.0, 0.4]},
+                                  {"angle": 120.0, "impulse": 0.2, "at": [0.2, 0.3, -0.4]},
+                                  {"direction": "Front", "impulse": 0.25, "at": [0.45, -0.2, 0.5]}])
+def test_a_scripted_push_at_a_point_sets_the_body_spinning_as_the_closed_form(mass, size, rate, yaw, push):
+    """A push with "at" (a point in the body's frame, here given as shares of the half sizes) on a frictionless
+    table: v = J/m along the arrow, w = I_world^-1 (r x J) with r turned by the yaw."""
+    half = np.array(size) / 2
+    push = dict(push, entity="A", at=list(np.array(push["at"]) * half))
+    sim = tabletop.Simulation(struck(size, mass, rate, yaw, push))
+    angle = math.radians(push["angle"] if "angle" in push else {"Left": 0, "Front": 90}[push["direction"]] + yaw)
+    j = push["impulse"] * np.array([math.cos(angle), 0.0, -math.sin(angle)])
+    rotation = turn(yaw)
+    r = rotation @ np.array(push["at"])
+    inertia_world = rotation @ np.diag(box_inertia(mass, size)) @ rotation.T
+    assert sim.velocities[0] == pytest.approx(j / mass, abs=1e-12)
+    assert sim.angular_velocities[0] == pytest.approx(np.linalg.solve(inertia_world, np.cross(r, j)), abs=1e-12)
+
+
+@pytest.mark.parametrize("mode", ["compat", "rules"])
+def test_the_report_modes_refuse_a_scripted_push_at_a_point_where_it_stands(mode):
+    scene = struck([0.1, 0.1, 0.1], 1.0, 60, 0.0, {"entity": "A", "direction": "Left", "impulse": 0.2,
+                                                     "at": [0, 0, 0.03]})
+    with pytest.raises(tabletop.ScenarioError, match=r"/script/0.*report 3\.5"):
+        tabletop.Simulation(scene, mode=mode).step(1)
+
+
+def test_a_push_at_a_point_takes_an_impulse_not_a_step():
+    scene = struck([0.1, 0.1, 0.1], 1.0, 60, 0.0, {"entity": "A", "direction": "Left", "step": 0.2,
+                                                     "at": [0, 0, 0.03]})
+    with pytest.raises(tabletop.ScenarioError, match=r"at /script/0/push/at: expected 'impulse' with 'at'"):
+        tabletop.scene(scene)
