@@ -116,7 +116,11 @@ double ShapeGeometry::boundingRadius() const {
 double ShapeGeometry::smallestHalfDimension() const {
   switch (kind_) {
     case ShapeKind::Sphere: return a_;
-    case ShapeKind::Cylinder: return std::min({a_, b_, 0.5 * c_});
+    case ShapeKind::Cylinder: {
+      // A cone's point is no size: its base is.
+      const double radius = std::min(a_, b_) > 0 ? std::min(a_, b_) : std::max(a_, b_);
+      return std::min(radius, 0.5 * c_);
+    }
     case ShapeKind::Cube:
     case ShapeKind::SolidBox: break;
   }

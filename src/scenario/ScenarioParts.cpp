@@ -35,6 +35,29 @@ std::size_t sizeCount(ShapeKind k) {
   return (k == ShapeKind::Cube || k == ShapeKind::Sphere) ? 1 : 3;
 }
 
+// A cylinder's [base radius, top radius, height]: a radius of 0 makes a
+// cone (its point at the top or at the base), but not both; empty on error.
+std::vector<double> cylinderSizes(Fields& f, const json& size) {
+  std::vector<double> s = f.numbers(size, f.at("size"), 3, 3, ranges::Range{0.0, kLength.hi, false});
+  if (s.size() != 3) return {};
+  bool fine = true;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const bool radius = i < 2;
+    if (radius && s[i] == 0.0) continue;
+    if (!ranges::inRange(s[i], kLength)) {
+      f.fail(f.at("size") + "/" + std::to_string(i),
+             std::string("expected ") + (radius ? "0 (a cone's point) or " : "") + rangeText(kLength) + ", got " +
+                 ranges::number(s[i]));
+      fine = false;
+    }
+  }
+  if (fine && s[0] == 0.0 && s[1] == 0.0) {
+    f.fail(f.at("size"), "expected a radius above 0 at one end at least (a cone has one), got [0, 0, ...]");
+    fine = false;
+  }
+  return fine ? s : std::vector<double>{};
+}
+
 }  // namespace
 
 Material readMaterial(Fields& parent, const std::string& key, Material m,
@@ -140,6 +163,8 @@ EntitySpec readEntity(const json& j, const std::string& path, const NameIndex& e
     if (sizeCount(*kind) == 1) {
       const double s = f.checkNumber(*size, f.at("size"), kLength, 0.0);
       if (s > 0.0) sizes = {s};
+    } else if (*kind == ShapeKind::Cylinder) {
+      sizes = cylinderSizes(f, *size);
     } else {
       sizes = f.numbers(*size, f.at("size"), 3, 3, kLength);
     }

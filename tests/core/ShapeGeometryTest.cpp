@@ -2,6 +2,7 @@
 
 #include "core/ShapeGeometry.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -48,6 +49,33 @@ TEST(ShapeGeometry, CylindersAndFrustumsMatchTheirClosedForms) {
   EXPECT_NEAR(f.topFootprint(30.0).first, r, kTol);
   EXPECT_EQ(ShapeGeometry::fromSizes(ShapeKind::Cylinder, {R, r, h})->sizes(), (std::vector<double>{R, r, h}));
   EXPECT_FALSE(ShapeGeometry::fromSizes(ShapeKind::Cube, {R, r}).has_value());
+}
+
+// A solid cone of base radius R and height h (point up): volume pi R^2 h / 3,
+// centroid h / 4 above the base, I_axis = 3 m R^2 / 10, I_transverse about
+// the centroid = 3 m R^2 / 20 + 3 m h^2 / 80. Point down (base radius 0),
+// the same solid upside down: its centroid 3 h / 4 above the point.
+TEST(ShapeGeometry, ConesMatchTheirClosedForms) {
+  for (const double R : {0.01, 0.05, 0.3}) {
+    for (const double h : {0.02, 0.1, 0.8}) {
+      for (const double m : {0.1, 2.0}) {
+        const ShapeGeometry up = ShapeGeometry::cylinder(R, 0.0, h);
+        const ShapeGeometry down = ShapeGeometry::cylinder(0.0, R, h);
+        for (const ShapeGeometry& c : {up, down}) {
+          const double scale = R * R * h;  // the cone's size, for relative tolerances
+          EXPECT_NEAR(c.volume(), kPi * R * R * h / 3.0, kTol * scale);
+          EXPECT_NEAR(c.inertia(m).y, 0.3 * m * R * R, kTol * m * R * R);
+          EXPECT_NEAR(c.inertia(m).x, 3.0 * m * R * R / 20.0 + 3.0 * m * h * h / 80.0, kTol * m * (R * R + h * h));
+          EXPECT_NEAR(c.inertia(m).z, c.inertia(m).x, kTol * m * (R * R + h * h));
+          EXPECT_NEAR(c.smallestHalfDimension(), std::min(R, 0.5 * h), kTol);
+        }
+        EXPECT_NEAR(up.centroidHeight(), h / 4.0, kTol * h);
+        EXPECT_NEAR(down.centroidHeight(), 3.0 * h / 4.0, kTol * h);
+        EXPECT_NEAR(up.topFootprint(0.0).first, 0.0, kTol);  // nothing rests on a point
+        EXPECT_NEAR(up.halfExtents().x, R, kTol);
+      }
+    }
+  }
 }
 
 }  // namespace

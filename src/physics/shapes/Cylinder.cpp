@@ -19,17 +19,21 @@ std::unique_ptr<btCollisionShape> makeCylinder(double R, double r, double h) {
     c->setMargin(margin);
     return c;
   }
-  // A truncated cone as a convex hull of two rings around the centroid. A
-  // hull grows outwards by its margin, so the rings are drawn in by it.
+  // A truncated cone as a convex hull of two rings around the centroid, a
+  // cone as one ring and its point. A hull grows outwards by its margin, so
+  // the rings and the point are drawn in by it.
   auto hull = std::make_unique<btConvexHullShape>();
   const double yc = ShapeGeometry::cylinder(R, r, h).centroidHeight();
-  const double m = std::min(margin, 0.5 * std::min(R, r));
+  const double smaller = std::min(R, r) > 0 ? std::min(R, r) : std::max(R, r);
+  const double m = std::min(margin, 0.5 * smaller);
   for (int i = 0; i < kHullSegments; ++i) {
     const double a = 2.0 * kPi * i / kHullSegments;
     const double c = std::cos(a), s = std::sin(a);
-    hull->addPoint(btVector3((R - m) * c, -yc + m, (R - m) * s), false);
-    hull->addPoint(btVector3((r - m) * c, h - yc - m, (r - m) * s), false);
+    if (R > 0) hull->addPoint(btVector3((R - m) * c, -yc + m, (R - m) * s), false);
+    if (r > 0) hull->addPoint(btVector3((r - m) * c, h - yc - m, (r - m) * s), false);
   }
+  if (R == 0) hull->addPoint(btVector3(0, -yc + m, 0), false);
+  if (r == 0) hull->addPoint(btVector3(0, h - yc - m, 0), false);
   hull->setMargin(m);
   hull->recalcLocalAabb();
   return hull;
