@@ -69,6 +69,26 @@ Vec3 ShapeGeometry::halfExtents() const {
 
 double ShapeGeometry::below() const { return kind_ == ShapeKind::Cylinder ? centroidHeight() : halfExtents().y; }
 
+// The body's axes in the world: column i of the turn is q (e_i). Along -Y
+// a box reaches sum_i h_i |(q e_i).y|; a rim of radius r about the axis a
+// at height t on it reaches -t a.y + r sqrt(1 - a.y^2).
+double ShapeGeometry::below(const Quat& q) const {
+  switch (kind_) {
+    case ShapeKind::Sphere: return a_;
+    case ShapeKind::Cylinder: {
+      const double ay = q.rotate({0, 1, 0}).y;
+      const double across = std::sqrt(std::max(0.0, 1.0 - ay * ay));
+      const double yc = centroidHeight();
+      return std::max(yc * ay + a_ * across, -(c_ - yc) * ay + b_ * across);
+    }
+    case ShapeKind::Cube:
+    case ShapeKind::SolidBox: break;
+  }
+  const Vec3 h = halfExtents();
+  return h.x * std::abs(q.rotate({1, 0, 0}).y) + h.y * std::abs(q.rotate({0, 1, 0}).y) +
+         h.z * std::abs(q.rotate({0, 0, 1}).y);
+}
+
 double ShapeGeometry::above() const {
   return kind_ == ShapeKind::Cylinder ? c_ - centroidHeight() : halfExtents().y;
 }

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "core/Quat.h"
 #include "core/ShapeKind.h"
 #include "core/Vec3.h"
 
@@ -35,6 +36,10 @@ class ShapeGeometry {
   /// highest point.
   double below() const;
   double above() const;
+  /// How far the lowest point lies below the centre of mass once the body
+  /// is turned by `q` (body to world, +Y up): a box's corner, a sphere's
+  /// radius, the lowest point of a frustum's rims or a cone's point.
+  double below(const Quat& q) const;
   /// Height of a cylinder's centre of mass above its base (a frustum's
   /// centroid); half the height for the other shapes.
   double centroidHeight() const;

@@ -100,7 +100,12 @@ void World::addLegsIfReachable() {
 
 Shape& World::addEntity(std::unique_ptr<Shape> shape, double mass, const Material& material,
                         const btVector3& centre, double yawDegrees) {
-  btTransform pose(yawRotation(yawDegrees), centre);
+  return addEntity(std::move(shape), mass, material, centre, yawRotation(yawDegrees));
+}
+
+Shape& World::addEntity(std::unique_ptr<Shape> shape, double mass, const Material& material,
+                        const btVector3& centre, const btQuaternion& orientation) {
+  btTransform pose(orientation, centre);
   shape->createBody(mass, material, pose);
   btRigidBody* body = shape->body();
   body->setUserIndex(static_cast<int>(entities_.size()));

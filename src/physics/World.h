@@ -50,6 +50,9 @@ class World : public Simulation {
   /// `yawDegrees` about +Y. Entities keep the order they were added in.
   Shape& addEntity(std::unique_ptr<Shape> shape, double mass, const Material& material,
                    const btVector3& centre, double yawDegrees);
+  /// The same, turned by `orientation` (body to world).
+  Shape& addEntity(std::unique_ptr<Shape> shape, double mass, const Material& material,
+                   const btVector3& centre, const btQuaternion& orientation);
 
   const Settings& settings() const { return settings_; }
   const Table& table() const { return table_; }

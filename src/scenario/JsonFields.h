@@ -50,6 +50,8 @@ class Fields {
   }
 
   bool valid() const { return j_.is_object(); }
+  /// Where this object's problems go, for a reader of a part of it.
+  std::vector<Problem>& problems() { return problems_; }
   std::string at(const std::string& key) const { return path_ + "/" + escapePointerToken(key); }
   void fail(const std::string& path, const std::string& message) { problems_.push_back({path, message}); }
 

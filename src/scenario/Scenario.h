@@ -8,6 +8,7 @@
 #include "core/Arrow.h"
 #include "core/Colour.h"
 #include "core/Material.h"
+#include "core/Quat.h"
 #include "core/Settings.h"
 #include "core/ShapeGeometry.h"
 #include "core/ShapeKind.h"
@@ -27,6 +28,9 @@ struct EntitySpec {
   Vec3 position;           ///< centre; y is filled in when `on` is set
   Support on;              ///< what it rests on at the start; none when the position gives a height
   double yawDegrees = 0.0;
+  /// A full orientation (body to world), when it turns about more than +Y;
+  /// an orientation about +Y alone is given as yawDegrees.
+  std::optional<Quat> orientation;
   Colour colour;
   double mass = 1.0;       ///< kg
   Material material;

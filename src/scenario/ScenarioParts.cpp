@@ -7,6 +7,7 @@
 #include "core/DirectionDef.h"
 #include "core/EnumNames.h"
 #include "core/Text.h"
+#include "scenario/Orientation.h"
 #include "scenario/ScenarioLoader.h"
 
 namespace tabletop::parts {
@@ -192,6 +193,10 @@ EntitySpec readEntity(const json& j, const std::string& path, const NameIndex& e
   }
 
   e.yawDegrees = f.number("yaw", kAngle, 0.0);
+  if (const std::optional<Quat> q = readOrientation(f)) {
+    if (f.has("yaw")) f.fail(f.at("yaw"), "expected 'yaw' or 'orientation', not both");
+    if (!onlyYaw(*q, e.yawDegrees)) e.orientation = q;
+  }
   e.colour = readColour(f, "colour", e.colour);
   e.mass = f.number("mass", kMass, e.mass, true);
   e.material = readMaterial(f, "material", e.material, problems);
@@ -289,6 +294,11 @@ void checkOverTable(const EntitySpec& e, const TableSpec& t, std::vector<Problem
 // top. One placed beside its base would be seated at the base's height and
 // float there.
 void checkOverBase(const EntitySpec& e, const EntitySpec& base, std::vector<Problem>& problems) {
+  if (base.orientation) {
+    problems.push_back({e.path + "/on", "expected an upright entity to rest on: " + quotedName(base.name) +
+                                            " is tilted, and its top is no level face"});
+    return;
+  }
   const auto [hx, hz] = base.geometry.topFootprint(base.yawDegrees);
   const double dx = e.position.x - base.position.x, dz = e.position.z - base.position.z;
   const bool over = base.geometry.round() ? std::hypot(dx, dz) <= hx : std::abs(dx) <= hx && std::abs(dz) <= hz;

@@ -40,19 +40,24 @@ std::unique_ptr<World> buildWorld(const Scenario& scenario, const Settings& sett
     indexOf[Support::entity(e.name)] = indexOf.size();
     std::unique_ptr<Shape> shape = makeShape(e);
     btVector3 centre(e.position.x, e.position.y, e.position.z);
+    const double below = e.orientation ? e.geometry.below(*e.orientation) : shape->below();
     // "on": the entity's lowest point rests on the top of what it names,
     // seated a hair into it (see Seating.h).
     switch (e.on.kind()) {
-      case Support::Kind::Table: centre.setY(seated(scenario.table.height + shape->below())); break;
-      case Support::Kind::Ground: centre.setY(seated(shape->below())); break;
+      case Support::Kind::Table: centre.setY(seated(scenario.table.height + below)); break;
+      case Support::Kind::Ground: centre.setY(seated(below)); break;
       case Support::Kind::Entity: {
         const Shape* base = world->find(e.on.entityName());
-        centre.setY(seated(base->position().y() + base->above() + shape->below()));
+        centre.setY(seated(base->position().y() + base->above() + below));
         break;
       }
       case Support::Kind::None: break;
     }
-    btRigidBody* body = world->addEntity(std::move(shape), e.mass, e.material, centre, e.yawDegrees).body();
+    const auto& q = e.orientation;
+    btRigidBody* body =
+        (q ? world->addEntity(std::move(shape), e.mass, e.material, centre, btQuaternion(q->x, q->y, q->z, q->w))
+           : world->addEntity(std::move(shape), e.mass, e.material, centre, e.yawDegrees))
+            .body();
     body->setLinearVelocity(btVector3(e.velocity.x, e.velocity.y, e.velocity.z));
     body->setAngularVelocity(btVector3(e.spin.x, e.spin.y, e.spin.z));
   }
@@ -119,9 +124,14 @@ std::vector<rules::RuleBody> buildRuleBodies(const Scenario& scenario) {
 std::unique_ptr<Simulation> buildSimulation(const Scenario& scenario, const Settings& settings,
                                             SimulationMode mode) {
   if (mode != SimulationMode::Bullet) {
-    // The report's rules start every entity at rest.
+    // The report's rules start every entity at rest, upright.
     std::vector<Problem> moving;
     for (const EntitySpec& e : scenario.entities) {
+      if (e.orientation) {
+        moving.push_back({e.path + "/orientation", "expected an upright entity, turned about Y alone, in mode " +
+                                                       std::string(toString(mode)) +
+                                                       ": the report's rules move entities upright (report 3.4)"});
+      }
       for (const auto& [key, v] : {std::pair{"velocity", e.velocity}, std::pair{"spin", e.spin}}) {
         if (v.x != 0.0 || v.y != 0.0 || v.z != 0.0) {
           moving.push_back({e.path + "/" + key, "expected no starting " + std::string(key) + " in mode " +
