@@ -46,6 +46,7 @@ std::string text(const json& j, const char* key, std::size_t i) {
 void SceneHistory::add(const SceneCall& call) {
   if (call.kind == SceneCall::Kind::Steps) {
     if (call.count == 0) return;
+    steps_ += static_cast<double>(call.count);
     if (!calls_.empty() && calls_.back().kind == SceneCall::Kind::Steps &&
         calls_.back().count <= static_cast<long long>(kMaxSteps) - call.count) {
       calls_.back().count += call.count;
@@ -57,14 +58,6 @@ void SceneHistory::add(const SceneCall& call) {
     return;
   }
   calls_.push_back(call);
-}
-
-double SceneHistory::steps() const {
-  double n = 0.0;
-  for (const SceneCall& c : calls_) {
-    if (c.kind == SceneCall::Kind::Steps) n += static_cast<double>(c.count);
-  }
-  return n;
 }
 
 json SceneHistory::toJson() const {
@@ -153,6 +146,7 @@ SceneHistory SceneHistory::fromJson(const json& j) {
     } else {
       refuse(i, "unknown call");
     }
+    if (call.kind == SceneCall::Kind::Steps) h.steps_ += static_cast<double>(call.count);
     h.calls_.push_back(call);
   }
   return h;

@@ -26,6 +26,11 @@ struct SceneCall {
   Vec3 torque;                 ///< Load, N m
   std::optional<Vec3> point;   ///< Impulse, Load: where it acts, m, world frame
 
+  /// Whether the call names an entity (arrow.entity).
+  bool namesEntity() const {
+    return kind == Kind::Push || kind == Kind::Rotate || kind == Kind::Impulse || kind == Kind::Load;
+  }
+
   static SceneCall of(Kind kind, long long count = 0, double value = 0.0) {
     SceneCall call;
     call.kind = kind;
@@ -51,7 +56,7 @@ class SceneHistory {
   void add(const SceneCall& call);
   const std::vector<SceneCall>& calls() const { return calls_; }
   /// The steps taken in all.
-  double steps() const;
+  double steps() const { return steps_; }
   /// False once more than kMaxCalls calls were made.
   bool complete() const { return complete_; }
   void clear() { *this = SceneHistory(); }
@@ -64,6 +69,7 @@ class SceneHistory {
 
  private:
   std::vector<SceneCall> calls_;
+  double steps_ = 0.0;  // the Steps calls' counts summed
   bool complete_ = true;
 };
 

@@ -111,9 +111,7 @@ void SteppedScene::reset() { build(); }
 
 void SteppedScene::restore(const SceneHistory& history, const std::function<void()>& between) {
   for (const SceneCall& call : history.calls()) {
-    const bool named = call.kind == SceneCall::Kind::Push || call.kind == SceneCall::Kind::Rotate ||
-                       call.kind == SceneCall::Kind::Impulse || call.kind == SceneCall::Kind::Load;
-    if (named && std::none_of(scenario_->entities.begin(), scenario_->entities.end(),
+    if (call.namesEntity() && std::none_of(scenario_->entities.begin(), scenario_->entities.end(),
                               [&](const EntitySpec& e) { return e.name == call.arrow.entity; })) {
       throw std::invalid_argument("history: no entity named \"" + call.arrow.entity + "\" in this scene");
     }

@@ -22,12 +22,6 @@ void DynamicsWorld::shortenPart(Part& part, double length) {
   part.length = length;
 }
 
-void DynamicsWorld::changeGravity(double g) {
-  const double old = getGravity().length();
-  setGravity(btVector3(0, -g, 0));
-  scaleCarriedImpulses(old > 0 ? g / old : 0.0);
-}
-
 void DynamicsWorld::scaleCarriedImpulses(double ratio) {
   if (ratio == 1.0) return;
   for (int m = 0; m < getDispatcher()->getNumManifolds(); ++m) {

@@ -113,6 +113,12 @@ void DynamicsWorld::startPart(Part& part) {
   applyRollingResistance(part);
 }
 
+void DynamicsWorld::changeGravity(double g) {
+  const double old = getGravity().length();
+  setGravity(btVector3(0, -g, 0));
+  scaleCarriedImpulses(old > 0 ? g / old : 0.0);
+}
+
 void DynamicsWorld::setLoads(std::vector<Load> loads) {
   loads_ = std::move(loads);
   if (!islandSolver_) return;
