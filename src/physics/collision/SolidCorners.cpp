@@ -1,16 +1,18 @@
 #include "physics/collision/SolidCorners.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <optional>
 
 #include <BulletDynamics/Dynamics/btRigidBody.h>
 
 #include "physics/collision/ContactResult.h"
+#include "physics/shapes/RoundEnds.h"
 
 namespace tabletop {
 namespace {
 
-constexpr int kRimPoints = 32;  // a cylinder's rims, as points
 
 // Heights or spans that differ by less than this are a tie, m: a tie goes
 // to the corner that comes first in the solid's own order.
@@ -18,6 +20,15 @@ constexpr btScalar kLevel = 1e-6;
 
 // A kept point this near a chosen corner (m, on the solid) is that corner.
 constexpr btScalar kSameCorner = 1e-6;
+
+// How far above the lowest corner the others count as on the face a solid
+// rests on, m: a twentieth of its smallest size.
+btScalar faceBand(const btConvexShape& solid) {
+  btVector3 low, high;
+  solid.getAabb(btTransform::getIdentity(), low, high);
+  const btVector3 size = high - low;
+  return 0.05 * std::min({size.x(), size.y(), size.z()});
+}
 
 }  // namespace
 
@@ -29,13 +40,8 @@ std::vector<btVector3> solidCorners(const btConvexShape& solid, const btVector3&
 
 void solidCorners(const btConvexShape& solid, const btVector3& down, std::vector<btVector3>& out) {
   out.clear();
-  if (solid.getShapeType() == CYLINDER_SHAPE_PROXYTYPE) {
-    out.reserve(2 * kRimPoints);
-    const btVector3 half = static_cast<const btCylinderShape&>(solid).getHalfExtentsWithMargin();
-    for (int i = 0; i < kRimPoints; ++i) {
-      const double a = 2.0 * SIMD_PI * i / kRimPoints;
-      for (const double y : {-half.y(), half.y()}) out.emplace_back(half.x() * std::cos(a), y, half.z() * std::sin(a));
-    }
+  if (const std::optional<RoundEnds> ends = roundEnds(solid)) {
+    rimCorners(*ends, down, {true, true}, out);
     return;
   }
   const auto& polyhedron = static_cast<const btPolyhedralConvexShape&>(solid);
@@ -48,6 +54,28 @@ void solidCorners(const btConvexShape& solid, const btVector3& down, std::vector
   }
 }
 
+void rimCorners(const RoundEnds& ends, const btVector3& down, const std::array<bool, 2>& lowestFirst,
+                std::vector<btVector3>& out) {
+  // The way down across the rims, as a unit (cos, sin) in the x-z plane.
+  const btScalar across = std::hypot(down.x(), down.z());
+  const bool defined = across > SIMD_EPSILON;
+  out.reserve(out.size() + 2 * kRimPoints);
+  for (int e = 0; e < 2; ++e) {
+    const btScalar r = ends.radius[e], y = ends.y[e];
+    if (r <= 0) {
+      out.emplace_back(0, y, 0);
+      continue;
+    }
+    const bool turned = defined && lowestFirst[static_cast<std::size_t>(e)];
+    const btScalar c0 = turned ? down.x() / across : 1, s0 = turned ? down.z() / across : 0;
+    for (int i = 0; i < kRimPoints; ++i) {
+      const double a = 2.0 * SIMD_PI * i / kRimPoints;
+      const btScalar c = std::cos(a), s = std::sin(a);
+      out.emplace_back(r * (c0 * c - s0 * s), y, r * (s0 * c + c0 * s));
+    }
+  }
+}
+
 void nearCorners(const btConvexShape& solid, const btTransform& pose, const btVector3& normal, btScalar offset,
                  btScalar threshold, const Approach& approach, std::vector<btVector3>& corners,
                  std::vector<NearCorner>& near) {
@@ -56,10 +84,36 @@ void nearCorners(const btConvexShape& solid, const btTransform& pose, const btVe
   const auto velocity = [](const btRigidBody* body, const btVector3& at) {
     return body ? body->getVelocityInLocalPoint(at - body->getCenterOfMassPosition()) : btVector3(0, 0, 0);
   };
-  solidCorners(solid, pose.getBasis().transpose() * -normal, corners);
+  const btVector3 down = pose.getBasis().transpose() * -normal;
+  const std::optional<RoundEnds> ends = roundEnds(solid);
+  // A rim lying out of level touches the plane at its lowest point alone:
+  // its other points, turning down as it rolls, would close on the plane
+  // along straight lines and hold it back. One within the face's band of
+  // level, or that may turn into it within the step, keeps its points at
+  // fixed angles on the body, as a resting or landing face needs.
+  std::array<bool, 2> lying{false, false};
+  if (ends) {
+    const auto spin = [](const btRigidBody* body) { return body ? body->getAngularVelocity() : btVector3(0, 0, 0); };
+    const btVector3 axis = pose.getBasis().getColumn(1);
+    const btScalar tilt = axis.cross(normal).length();
+    const btScalar tilting = (spin(moving) - spin(support)).cross(axis).length() * approach.timeStep;
+    const btScalar band = faceBand(solid);
+    for (std::size_t e = 0; e < 2; ++e) lying[e] = 2 * ends->radius[e] * (tilt - tilting) > band;
+    corners.clear();
+    rimCorners(*ends, down, lying, corners);
+  } else {
+    solidCorners(solid, down, corners);
+  }
+  // The points of a lying rim after its first (its lowest) stand aside.
+  const int topFirst = ends && ends->radius[0] > 0 ? kRimPoints : 1;
+  const auto standsAside = [&](int c) {
+    const bool top = c >= topFirst;
+    return ends && lying[top ? 1 : 0] && c != (top ? topFirst : 0);
+  };
   near.clear();
   near.reserve(corners.size());
   for (int c = 0; c < static_cast<int>(corners.size()); ++c) {
+    if (standsAside(c)) continue;
     const btVector3 vertex = pose * corners[static_cast<std::size_t>(c)];
     const btScalar distance = normal.dot(vertex) - offset;
     if (distance > threshold) continue;
@@ -101,10 +155,7 @@ void addCornerPoints(btManifoldResult& result, const std::vector<NearCorner>& ch
 }
 
 const std::vector<NearCorner>& CornerChoice::choose(const btConvexShape& solid, std::vector<NearCorner>& near) {
-  btVector3 low, high;
-  solid.getAabb(btTransform::getIdentity(), low, high);
-  const btVector3 size = high - low;
-  const btScalar band = 0.05 * std::min({size.x(), size.y(), size.z()});
+  const btScalar band = faceBand(solid);
   const auto level = [](const NearCorner& c) { return std::min(c.distance, c.arrival); };
   btScalar lowest = BT_LARGE_FLOAT, lowestArrival = BT_LARGE_FLOAT;
   for (const NearCorner& c : near) lowest = std::min(lowest, c.distance), lowestArrival = std::min(lowestArrival, c.arrival);

@@ -1,18 +1,33 @@
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include <btBulletCollisionCommon.h>
 
 namespace tabletop {
 
+struct RoundEnds;
+
 /// A solid's corners in its own frame, the candidate contact points
 /// against a flat support (the floor, a box's face): a polyhedron's
 /// vertices (a hull's drawn out by its margin along `down`, the way to the
-/// support, where its surface is), or points around a cylinder's two rims.
+/// support, where its surface is), or a round solid's rims (rimCorners).
 std::vector<btVector3> solidCorners(const btConvexShape& solid, const btVector3& down);
 /// The same into `out` (cleared first), whose storage the caller keeps.
 void solidCorners(const btConvexShape& solid, const btVector3& down, std::vector<btVector3>& out);
+
+/// Points to a rim of a round solid.
+constexpr int kRimPoints = 32;
+
+/// A round solid's corners, appended to `out`: each end in turn, a rim as
+/// kRimPoints points on the true circle, a cone's point as one. A rim
+/// marked in `lowestFirst` starts at its lowest point along `down` (the
+/// solid's frame), so a body rolling on it touches exactly under its axis;
+/// the others keep their points at fixed angles on the body, as a resting
+/// face needs. solidCorners() marks both.
+void rimCorners(const RoundEnds& ends, const btVector3& down, const std::array<bool, 2>& lowestFirst,
+                std::vector<btVector3>& out);
 
 /// A corner near the support: its index in solidCorners(), its distance
 /// to the support's plane (m, negative inside), where it is (world), and

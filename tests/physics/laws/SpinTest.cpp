@@ -22,17 +22,18 @@ struct Spun {
   const char* size;
 };
 
-// Every shape standing on a face or its base but a truncated cone: its
-// hull's rings are drawn in by its margin (Cylinder.cpp), and its base's
-// contact points lie that far inside its rim. A cone 0.05 m across the base
-// with a 2.5 mm margin turns 5.3% beyond the closed form at every rate
-// (bench --laws shows it; docs/bullet-corrections.md, "Left").
+// Every shape standing on a face or its base. A truncated cone turned 5.3%
+// beyond the closed form while its base's contact points were its hull's
+// ring, drawn in by its margin (Cylinder.cpp); they are on its true rim
+// now (rimCorners).
 const Spun kSpun[] = {
     {"cube", "0.1"},
     {"cube", "0.06"},
     {"box", "[0.2, 0.05, 0.12]"},
     {"cylinder", "[0.05, 0.05, 0.1]"},
     {"cylinder", "[0.08, 0.08, 0.03]"},
+    {"cylinder", "[0.05, 0.03, 0.1]"},
+    {"cylinder", "[0.03, 0.05, 0.1]"},
 };
 
 TEST(Spin, TurnsTheClosedFormAngleAndStopsWhereItStands) {

@@ -65,9 +65,8 @@ Scenario toppleScene(const Topple& c) {
 }
 
 // How far the body's lowest corner is under the support, m: a box's
-// corner, or a point of a cylinder's rims as the contacts see them (32 to a
-// rim: the true circle reaches r (1 - cos(pi / 32)) lower between them,
-// 0.19 mm for r = 0.04 m).
+// corner, or the lowest point of a cylinder's rims (solidCorners puts it
+// first on each rim).
 double depthUnder(const Shape& body, double support) {
   const btTransform& pose = body.body()->getWorldTransform();
   const auto& solid = static_cast<const btConvexShape&>(body.collisionShape());
