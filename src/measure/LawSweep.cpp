@@ -19,8 +19,9 @@ namespace {
 struct ShapeSize {
   const char* shape;
   const char* size;
-  double radius;  // a sphere's, m
+  double radius;  // a sphere's, or a cylinder's lying on its side, m
   double below;   // m, its centre of mass above its lowest point, standing
+  PushCase::Lying lying = PushCase::Lying::Upright;
 };
 
 const ShapeSize kSolids[] = {
@@ -30,6 +31,10 @@ const ShapeSize kSolids[] = {
     {"cylinder", "[0.08, 0.08, 0.03]", 0, 0.015},
     {"cylinder", "[0.05, 0.03, 0.1]", 0, ShapeGeometry::cylinder(0.05, 0.03, 0.1).below()}};
 const ShapeSize kSpheres[] = {{"sphere", "0.05", 0.05, 0.05}, {"sphere", "0.1", 0.1, 0.1}};
+// A cylinder lying on its side rolls when pushed across its axis and
+// slides when pushed along it.
+const ShapeSize kRolling = {"cylinder", "[0.05, 0.05, 0.1]", 0.05, 0.05, PushCase::Lying::Across};
+const ShapeSize kSlidingAlong = {"cylinder", "[0.05, 0.05, 0.1]", 0.05, 0.05, PushCase::Lying::Along};
 const double kRestitutions[] = {0.0, 0.5, 0.9};
 const double kAngles[] = {0.0, 45.0, 77.0, 200.0};
 
@@ -39,22 +44,40 @@ constexpr double kRollingFriction = 0.002;  // m
 constexpr double kStep = 0.2;          // m
 const double kSpins[] = {5.0, -12.0};  // rad/s about the vertical
 
+// How far a body turned, degrees: an upright one's yaw, a lying one's
+// axis away from its start (level, across or along the push).
+double turnOf(const EntityState& a, const PushCase& c) {
+  if (c.lying == PushCase::Lying::Upright) return std::abs(a.yawDegrees);
+  const auto [w, x, y, z] = a.orientation;
+  const double angle = c.angle * std::acos(-1.0) / 180.0;
+  const bool across = c.lying == PushCase::Lying::Across;
+  const double ux = across ? std::sin(angle) : std::cos(angle), uz = across ? std::cos(angle) : -std::sin(angle);
+  const double along = std::abs(2 * (x * y - w * z) * ux + 2 * (y * z + w * x) * uz);
+  return std::acos(std::min(1.0, along)) * 180.0 / std::acos(-1.0);
+}
+
 // One law for one shape on one support at one rate: the worst over angles.
 LawPoint measure(const std::string& law, const ShapeSize& shape, const char* support, double rate) {
-  LawPoint point{law, std::string(shape.shape) + " " + shape.size, support, rate, 0.0, 0.0};
-  const bool sphere = shape.radius > 0;
+  const std::string lying = shape.lying == PushCase::Lying::Across  ? " lying across"
+                            : shape.lying == PushCase::Lying::Along ? " lying along"
+                                                                    : "";
+  LawPoint point{law, std::string(shape.shape) + " " + shape.size + lying, support, rate, 0.0, 0.0};
+  const bool sphere = shape.radius > 0 && shape.lying == PushCase::Lying::Upright;
+  const bool rolls = sphere || shape.lying == PushCase::Lying::Across;
   for (const double angle : kAngles) {
     PushCase c{shape.shape, shape.size, support, angle, rate};
-    if (sphere) c.rollingFriction = kRollingFriction;
+    c.lying = shape.lying;
+    if (rolls) c.rollingFriction = kRollingFriction;
     if (law == "step") {
       c.step = kStep;
     } else {
-      c.impulse = sphere ? kRollImpulse : kSlideImpulse;
+      c.impulse = rolls ? kRollImpulse : kSlideImpulse;
     }
     const Scenario s = pushScene(c);
     const double g = s.settings.gravity, v0 = c.impulse / kPushedMass;
     const double expected = law == "step"    ? kStep
-                            : law == "roll" ? rollingDistance(v0, c.friction, c.rollingFriction, shape.radius, g)
+                            : law == "roll" ? rollingDistance(v0, c.friction, c.rollingFriction, shape.radius, g,
+                                                              sphere ? 0.4 : 0.5)
                                             : slidingDistance(v0, c.friction, g);
     auto sim = buildSimulation(s, s.settings, SimulationMode::Bullet);
     const RunResult r = runScript(s, s.settings, *sim);
@@ -62,7 +85,7 @@ LawPoint measure(const std::string& law, const ShapeSize& shape, const char* sup
     const auto [x0, z0] = pushStart(c);
     const double error = r.complete ? std::abs(std::hypot(a.position.x - x0, a.position.z - z0) - expected) : INFINITY;
     point.worstError = std::max(point.worstError, error);
-    if (!sphere) point.worstTurn = std::max(point.worstTurn, std::abs(a.yawDegrees));
+    if (!sphere) point.worstTurn = std::max(point.worstTurn, turnOf(a, c));
   }
   return point;
 }
@@ -116,7 +139,9 @@ LawPoint measureBounce(const ShapeSize& shape, const char* support, double rate)
 std::vector<LawPoint> measureLaws(const std::vector<double>& rates, const MeasureHooks& hooks) {
   std::vector<std::tuple<std::string, const ShapeSize*>> jobs;
   for (const ShapeSize& s : kSolids) jobs.emplace_back("slide", &s);
+  jobs.emplace_back("slide", &kSlidingAlong);
   for (const ShapeSize& s : kSpheres) jobs.emplace_back("roll", &s);
+  jobs.emplace_back("roll", &kRolling);
   for (const ShapeSize& s : kSolids) jobs.emplace_back("step", &s);
   for (const ShapeSize& s : kSpheres) jobs.emplace_back("step", &s);
   for (const ShapeSize& s : kSolids) jobs.emplace_back("spin", &s);

@@ -13,8 +13,9 @@ namespace tabletop {
 /// the same laws to their tolerances):
 ///  - slide: a cube, a box, cylinders and a cone given v0 = 1.6 m/s
 ///    (mu 0.25) travel d = v0^2 / (2 mu g) without turning;
-///  - roll: spheres (rf 2 mm) given v0 = 0.4 m/s slip, then roll, to
-///    rollingDistance();
+///  - roll: spheres, and a cylinder lying on its side pushed across its
+///    axis (rf 2 mm), given v0 = 0.4 m/s slip, then roll, to
+///    rollingDistance(); the same cylinder pushed along its axis slides;
 ///  - step: every shape pushed by a 0.2 m step travels it;
 ///  - spin: a cube, a box and cylinders spun about the vertical at 5 and
 ///    -12 rad/s turn w0^2 / (2 alpha) and stay where they stand

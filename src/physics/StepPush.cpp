@@ -13,11 +13,11 @@ double slidingDistance(double v0, double mu, double gravity) {
   return v0 * v0 / (2.0 * mu * gravity);
 }
 
-double rollingDistance(double v0, double mu, double rf, double radius, double gravity) {
-  const double rho = rf / radius;
-  const double t1 = 2.0 * v0 / (gravity * (7.0 * mu - 5.0 * rho));
-  const double v1 = 5.0 * v0 * (mu - rho) / (7.0 * mu - 5.0 * rho);
-  const double rollDeceleration = 5.0 * gravity * rho / 7.0;
+double rollingDistance(double v0, double mu, double rf, double radius, double gravity, double gyration) {
+  const double rho = rf / radius, k = gyration;
+  const double t1 = k * v0 / (gravity * ((1.0 + k) * mu - rho));
+  const double v1 = v0 - mu * gravity * t1;
+  const double rollDeceleration = gravity * rho / (1.0 + k);
   return 0.5 * (v0 + v1) * t1 + v1 * v1 / (2.0 * rollDeceleration);
 }
 

@@ -11,17 +11,20 @@ class Shape;
 /// Coulomb friction `mu`: d = v0^2 / (2 mu g).
 double slidingDistance(double v0, double mu, double gravity);
 
-/// Distance a solid sphere of `radius` travels after a push through its
+/// Distance a round body of `radius` travels after a push through its
 /// centre launches it at `v0` without spin, on a contact with friction `mu`
-/// and rolling friction `rf` (a lever arm in metres, as Bullet's):
+/// and rolling friction `rf` (a lever arm in metres, as Bullet's), where
+/// `gyration` is k^2 / r^2 about the axis it rolls on (2/5 for a solid
+/// sphere, 1/2 for a solid cylinder lying on its side):
 ///  - it first slips: v falls at mu g while the friction and the rolling
-///    resistance spin it up, dw/dt = 5 g (mu r - rf) / (2 r^2), until
-///    v = w r at t1 = 2 v0 / (g (7 mu - 5 rf / r)), with
-///    v1 = 5 v0 (mu - rf / r) / (7 mu - 5 rf / r) (5/7 v0 when rf = 0);
-///  - it then rolls, decelerating at a = 5 g rf / (7 r) (energy: the
-///    rolling kinetic energy 7/10 m v^2 is lost at the rate rf m g v / r).
+///    resistance spin it up, d(w r)/dt = g (mu - rf / r) / k, until v = w r
+///    at t1 = k v0 / (g ((1 + k) mu - rf / r)), v1 = v0 - mu g t1 (5/7 v0
+///    for a sphere and 2/3 v0 for a cylinder when rf = 0);
+///  - it then rolls, decelerating at a = g rf / (r (1 + k)) (energy: the
+///    rolling kinetic energy (1 + k) m v^2 / 2 is lost at the rate
+///    rf m g v / r).
 /// d = (v0 + v1) t1 / 2 + v1^2 / (2 a).
-double rollingDistance(double v0, double mu, double rf, double radius, double gravity);
+double rollingDistance(double v0, double mu, double rf, double radius, double gravity, double gyration = 0.4);
 
 /// The speed a push must give `shape` (a cube or box slides, a sphere slips
 /// then rolls, a cylinder slides on its base), alone on a surface whose

@@ -44,7 +44,16 @@ Scenario pushScene(const PushCase& c) {
   text << R"({"name": "A", "shape": ")" << c.shape << R"(", "size": )" << c.size << R"(, "position": [)" << x0
        << ", " << z0 << R"(], "on": ")" << (base ? "Base" : c.support) << R"(", "mass": )" << kPushedMass
        << R"(, "material": {"friction": )" << c.friction << R"(, "rolling_friction": )" << c.rollingFriction
-       << R"(}, "spin": [0, )" << c.spin << R"(, 0]}], "script": [)";
+       << R"(}, "spin": [0, )" << c.spin << ", 0]";
+  if (c.lying != PushCase::Lying::Upright) {
+    // The body's y axis turned a right angle about y x u onto u, the level
+    // direction across the push, (sin a, 0, cos a), or along it.
+    const double a = convertAngle(c.angle);
+    const double ux = c.lying == PushCase::Lying::Across ? std::sin(a) : std::cos(a);
+    const double uz = c.lying == PushCase::Lying::Across ? std::cos(a) : -std::sin(a);
+    text << R"(, "orientation": {"axis": [)" << uz << ", 0, " << -ux << R"(], "angle": 90})";
+  }
+  text << R"(}], "script": [)";
   if (c.step > 0 || c.impulse > 0) {
     text << R"({"push": {"entity": "A", "angle": )" << c.angle << ", ";
     if (c.step > 0) {
@@ -98,7 +107,9 @@ std::string describe(const RideCase& c) {
 
 std::string describe(const PushCase& c) {
   std::ostringstream s;
-  s << c.shape << " " << c.size << " on the " << c.support << ", ";
+  s << c.shape << " " << c.size;
+  if (c.lying != PushCase::Lying::Upright) s << (c.lying == PushCase::Lying::Across ? " lying across" : " lying along");
+  s << " on the " << c.support << ", ";
   if (c.spin != 0) s << "spun at " << c.spin << " rad/s";
   else s << "at " << c.angle << " deg";
   s << ", " << c.rate << " Hz";

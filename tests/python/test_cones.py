@@ -1,6 +1,8 @@
 """Cones: a cylinder with a radius of 0 at one end. Checked against closed
 forms over sizes and rates: a cone standing on its base rests with its
-centroid h/4 above the table top, one dropped onto it lands there upright,
+centroid h/4 above the table top, one lying on its side rests on its slant
+line (its centroid 3h/4 sin(a) up, a its half angle), one dropped onto its
+base lands there upright,
 its image narrows to its point, and a cone of no radius at all is refused
 where it stands."""
 import math
@@ -31,6 +33,25 @@ def test_a_cone_on_its_base_rests_with_its_centroid_a_quarter_up(radius, height,
     assert sim.positions[0] == pytest.approx([0.1, TOP + height / 4, -0.2], abs=1e-5)  # m
     assert np.abs(sim.velocities[0]).max() < 1e-5  # m/s
     assert sim.orientations[0] == pytest.approx([1, 0, 0, 0], abs=1e-6)
+
+
+@pytest.mark.parametrize("rate", RATES)
+@pytest.mark.parametrize("radius,height", CONES)
+def test_a_cone_lying_on_its_side_rests_on_its_slant_line(radius, height, rate):
+    """Turned by 90 deg + a about z, its slant line lies level: the point and
+    its rim's lowest point touch the table, the centroid 3h/4 sin(a) up."""
+    a = math.atan(radius / height)
+    scene = cone(radius, height, rate)
+    scene["entities"][0]["orientation"] = {"axis": [0, 0, 1], "angle": 90 + math.degrees(a)}
+    sim = tabletop.Simulation(scene, script=False)
+    up = TOP + 0.75 * height * math.sin(a)
+    assert sim.positions[0, 1] == pytest.approx(up, abs=1e-8)  # placed, m
+    start = sim.orientations[0].copy()
+    sim.step(rate)  # 1 s
+    assert sim.positions[0] == pytest.approx([0.1, up, -0.2], abs=1e-5)  # m
+    assert np.abs(sim.velocities[0]).max() < 1e-5  # m/s
+    turn = 2 * math.acos(min(1.0, abs(float(np.dot(sim.orientations[0], start)))))
+    assert turn * max(radius, height) < 1e-5  # its farthest point moved under 0.01 mm
 
 
 @pytest.mark.parametrize("rate", RATES)
