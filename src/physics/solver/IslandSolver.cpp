@@ -23,7 +23,7 @@ constexpr double kLoadNormal = 0.7071;
 constexpr double kSlideSpeed = 1e-3;
 // A touching point rolls when its bodies turn over each other, about an
 // axis across its normal, faster than this, rad/s.
-constexpr double kRollRate = 1e-3;
+constexpr double kRollRate = 1e-2;
 
 // Whether a point's rows are independent of each other: each body at it is
 // a ball (whose normal passes through its centre, and whose inertia is the
