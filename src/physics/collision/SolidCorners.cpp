@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <utility>
 
 #include <BulletDynamics/Dynamics/btRigidBody.h>
 
@@ -28,6 +29,21 @@ btScalar faceBand(const btConvexShape& solid) {
   solid.getAabb(btTransform::getIdentity(), low, high);
   const btVector3 size = high - low;
   return 0.05 * std::min({size.x(), size.y(), size.z()});
+}
+
+// The unit circle at the rims' kRimPoints angles, made once: cosines and
+// sines for every rim of every pair, every step, were a pile's largest
+// cost in libm.
+const std::array<std::pair<btScalar, btScalar>, kRimPoints>& unitRim() {
+  static const auto circle = [] {
+    std::array<std::pair<btScalar, btScalar>, kRimPoints> c{};
+    for (int i = 0; i < kRimPoints; ++i) {
+      const double a = 2.0 * SIMD_PI * i / kRimPoints;
+      c[static_cast<std::size_t>(i)] = {std::cos(a), std::sin(a)};
+    }
+    return c;
+  }();
+  return circle;
 }
 
 }  // namespace
@@ -68,11 +84,7 @@ void rimCorners(const RoundEnds& ends, const btVector3& down, const std::array<b
     }
     const bool turned = defined && lowestFirst[static_cast<std::size_t>(e)];
     const btScalar c0 = turned ? down.x() / across : 1, s0 = turned ? down.z() / across : 0;
-    for (int i = 0; i < kRimPoints; ++i) {
-      const double a = 2.0 * SIMD_PI * i / kRimPoints;
-      const btScalar c = std::cos(a), s = std::sin(a);
-      out.emplace_back(r * (c0 * c - s0 * s), y, r * (s0 * c + c0 * s));
-    }
+    for (const auto& [c, s] : unitRim()) out.emplace_back(r * (c0 * c - s0 * s), y, r * (s0 * c + c0 * s));
   }
 }
 
