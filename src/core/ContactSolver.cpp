@@ -19,7 +19,8 @@ std::string describeUse(const SolverUse& use) {
   return "islands solved exactly " + std::to_string(use.direct) + " (by the guess " + std::to_string(use.guessed) +
          ", by the pivoting " + std::to_string(use.direct - use.guessed) + "), by sweeps " + std::to_string(use.swept) +
          (use.longSwept > 0 ? ", by long sweeps (a load too large to pivot) " + std::to_string(use.longSwept) : "") +
-         ", by sweeps after the pivoting failed " + std::to_string(use.fallbacks);
+         ", by sweeps after the pivoting failed " + std::to_string(use.fallbacks) +
+         (use.partBudget > 0 ? "; steps that used every part " + std::to_string(use.partBudget) : "");
 }
 
 std::optional<ContactSolver> contactSolverFromString(std::string_view name) { return valueNamed(name, kNames); }

@@ -30,6 +30,9 @@ struct SolverUse {
   long swept = 0;      ///< by sequential impulses, by choice or by size
   long longSwept = 0;  ///< carrying a load but too large to pivot: the long sweeps (IslandSolver)
   long fallbacks = 0;  ///< meant for the pivoting, which failed on them (then swept)
+  /// Steps whose events used up the parts a step may be cut into (the
+  /// last part then took what was left whole, its events unsplit).
+  long partBudget = 0;
 };
 
 /// The largest island (normal and friction rows together) the Dantzig

@@ -337,4 +337,10 @@ WorkCount World::work() const {
   return w;
 }
 
+SolverUse World::solverUse() const {
+  SolverUse use = pipeline_.solver->use();
+  use.partBudget = pipeline_.world->partBudgetSteps();
+  return use;
+}
+
 }  // namespace tabletop

@@ -111,7 +111,7 @@ class World : public Simulation {
   const std::vector<Event>& events() const override { return events_; }
   void applyImpulse(const std::string& entity, const Vec3& impulse, const std::optional<Vec3>& point) override;
   std::vector<ContactReport> contacts() const override;
-  SolverUse solverUse() const override { return pipeline_.solver->use(); }
+  SolverUse solverUse() const override;
   WorkCount work() const override;
 
  private:

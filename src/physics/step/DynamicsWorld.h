@@ -86,6 +86,8 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   /// The pairs that bounced inside the last step, in time order: they may
   /// be apart again by its end, where the manifolds no longer show it.
   const std::vector<Struck>& struck() const { return struck_; }
+  /// Steps whose events used up the parts a step may be cut into.
+  long partBudgetSteps() const { return partBudgetSteps_; }
   /// Parts x bodies and parts x contact points so far (WorkCount.h).
   const WorkCount& work() const { return work_; }
 
@@ -181,12 +183,12 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   // At most this many parts to a step (the cap on impacts placed at their
   // own time in one step; past it the rest of the step is taken whole).
   static constexpr int kMaxParts = 8;
-
   double smoothAcceleration_ = 0.0;
   bool secondOrder_ = false;
   double lastStep_ = 0.0;    // the length of the part before, s (0: none yet)
   double stepLength_ = 0.0;  // the step being taken, s
   std::vector<Struck> struck_;
+  long partBudgetSteps_ = 0;
   bool solved_ = false;      // a solve has run: contacts carry their loads
   HeldGaps::Storage heldGaps_;
   HeldPlaces::Storage heldPlaces_;

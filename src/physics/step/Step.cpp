@@ -59,6 +59,7 @@ void DynamicsWorld::step(double dt) {
     stepPart(part);
     lastStep_ = part.length;
     left = part.length < left ? left - part.length : 0.0;
+    if (left > 0 && index + 2 == kMaxParts) ++partBudgetSteps_;
   }
 }
 
