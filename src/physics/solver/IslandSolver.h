@@ -34,7 +34,10 @@ struct IslandSolverParts {
 /// weight down too slowly; one with more rows gets the long sweeps below)
 /// or slide on a touching point (where sweeps let
 /// friction shift the load between the points unevenly, and a sliding cube
-/// stopped short and turned) and sweeps the rest.
+/// stopped short and turned), those of a body whose slip stopped in the
+/// part before (its load shifts at once back from its leading points), a
+/// round solid rolling on its rims (friction both ways at its points), and
+/// sweeps the rest.
 /// A ball's point (against a ball or something that does not move) slides
 /// without pivoting: its rows do not act on each other, one sweep solves
 /// them exactly, and pivoting only cost. Nor does a frictionless one, which
@@ -96,6 +99,9 @@ class IslandSolver : private IslandSolverParts, public btMLCPSolver {
   /// step: an island where one touches with friction is pivoted wherever
   /// it fits, as a load is.
   void setLoaded(BodySet bodies) { loaded_ = std::move(bodies); }
+  /// The bodies whose slip stopped in the part before: their islands are
+  /// pivoted in the next (setSettling()).
+  void setSettling(const BodySet& bodies) { settling_ = &bodies; }
   void forgetSwept() { swept_.clear(); }
   /// Whether an island since the last call carried a load but was too
   /// large to pivot, and was given the long sweeps; clears it. Such an
@@ -189,6 +195,7 @@ class IslandSolver : private IslandSolverParts, public btMLCPSolver {
   bool longSweepsTaken_ = false;
   BodySet swept_;
   BodySet loaded_;          // setLoaded()
+  const BodySet* settling_ = nullptr;  // setSettling()
   bool counted_ = false;    // the island being solved counts in use_
   bool guessed_ = false;    // the island just solved exactly was solved by the guess
   SolverUse use_;

@@ -227,6 +227,7 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
     double faceLimit = 0;
   };
   std::unordered_map<const btCollisionObject*, BodySlip> slips_;
+  BodySet settling_[2];  // the bodies whose slip stopped in a part, and in the one before
   SlidingContacts sliding_;  // contacts whose friction was at its limit in it
   SlidingContacts slidingNext_;  // findSlipStops', kept to reuse its storage
   // A contact's friction in the last solve, its limit, and its points'

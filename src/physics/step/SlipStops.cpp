@@ -132,6 +132,11 @@ void DynamicsWorld::findSlipStops(const std::vector<Slip>& slipping) {
     }
   }
   std::swap(sliding_, slidingNext_);
+  BodySet& settling = settling_[0];
+  settling.clear();
+  for (const auto& [body, slip] : slips_) {
+    if (slip.stop.share < 1.0) settling.insert(body);
+  }
 }
 
 }  // namespace tabletop

@@ -105,6 +105,10 @@ void DynamicsWorld::stepPart(Part& part) {
 // starts from are read here.
 void DynamicsWorld::startPart(Part& part) {
   noteKicked();
+  // The bodies whose slip stopped in the part before settle in this one.
+  std::swap(settling_[0], settling_[1]);
+  settling_[0].clear();
+  if (islandSolver_) islandSolver_->setSettling(settling_[1]);
   if (smoothAcceleration_ > 0) saveStartVelocities();
   btDiscreteDynamicsWorld::applyGravity();
   for (const Load& load : loads_) {
