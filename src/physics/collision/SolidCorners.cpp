@@ -14,7 +14,6 @@
 namespace tabletop {
 namespace {
 
-
 // Heights or spans that differ by less than this are a tie, m: a tie goes
 // to the corner that comes first in the solid's own order.
 constexpr btScalar kLevel = 1e-6;

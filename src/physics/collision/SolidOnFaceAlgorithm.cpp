@@ -11,6 +11,7 @@
 #include "physics/collision/ContactResult.h"
 #include "physics/collision/ClosestPoints.h"
 #include "physics/contact/ContactKinematics.h"
+#include "physics/shapes/RoundEnds.h"
 #include "physics/shapes/ShapeKinds.h"
 
 namespace tabletop {
@@ -182,15 +183,9 @@ SolidOnFaceAlgorithm::FacedShape SolidOnFaceAlgorithm::facesOf(const btCollision
   const btScalar m = hull.getMargin();
   for (int e = 0; e < 2; ++e) {
     const btScalar level = e == 0 ? top : bottom;
-    int count = 0;
-    btScalar low = BT_LARGE_FLOAT, high = 0;
-    for (int p = 0; p < n; ++p) {
-      if (std::abs(points[p].y() - level) > kRingTolerance) continue;
-      const btScalar r = std::hypot(points[p].x(), points[p].z());
-      low = std::min(low, r), high = std::max(high, r), ++count;
-    }
-    if (count < 3 || high - low > kRingTolerance) return faces;
-    faces.radius[e] = high * std::cos(SIMD_PI / count) + m;
+    const HullRing ring = hullRing(hull, level);
+    if (ring.count < 3 || ring.high - ring.low > kRingTolerance) return faces;
+    faces.radius[e] = ring.high * std::cos(SIMD_PI / ring.count) + m;
   }
   faces.first = faces.last = 1;
   faces.ends[0] = top + m;

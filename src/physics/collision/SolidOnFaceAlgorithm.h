@@ -84,9 +84,6 @@ class SolidOnFaceAlgorithm : public btActivatingCollisionAlgorithm {
   // cylinder's, then a cone's; 0 for a shape with none.
   static constexpr int kBoxRank = 3;
   static int faceRank(const btCollisionShape& shape);
-  // How far a hull's ring points may lie from their ring's level and
-  // radius, m.
-  static constexpr btScalar kRingTolerance = 1e-9;
   Face outerFace(const btCollisionObjectWrapper* boxWrap, const btCollisionObjectWrapper* solidWrap,
                  btScalar timeStep);
   static bool overFace(const btCollisionObjectWrapper* boxWrap, const Face& face, const NearCorner& corner);

@@ -6,25 +6,26 @@
 namespace tabletop {
 namespace {
 
-// Points whose heights or radii differ by less than this are level, m.
-constexpr btScalar kRing = 1e-9;
-
 // The radius of the hull's points at height `level` if they make a ring
 // (or one point on the axis), else a negative number.
 btScalar ringAt(const btConvexHullShape& hull, btScalar level) {
-  const btVector3* points = hull.getUnscaledPoints();
-  int count = 0;
-  btScalar low = BT_LARGE_FLOAT, high = 0;
-  for (int p = 0; p < hull.getNumPoints(); ++p) {
-    if (std::abs(points[p].y() - level) > kRing) continue;
-    const btScalar r = std::hypot(points[p].x(), points[p].z());
-    low = std::min(low, r), high = std::max(high, r), ++count;
-  }
-  if (count == 1 && high <= kRing) return 0;
-  return count >= 3 && high - low <= kRing ? high : -1;
+  const HullRing ring = hullRing(hull, level);
+  if (ring.count == 1 && ring.high <= kRingTolerance) return 0;
+  return ring.count >= 3 && ring.high - ring.low <= kRingTolerance ? ring.high : -1;
 }
 
 }  // namespace
+
+HullRing hullRing(const btConvexHullShape& hull, btScalar level) {
+  const btVector3* points = hull.getUnscaledPoints();
+  HullRing ring;
+  for (int p = 0; p < hull.getNumPoints(); ++p) {
+    if (std::abs(points[p].y() - level) > kRingTolerance) continue;
+    const btScalar r = std::hypot(points[p].x(), points[p].z());
+    ring.low = std::min(ring.low, r), ring.high = std::max(ring.high, r), ++ring.count;
+  }
+  return ring;
+}
 
 std::optional<RoundEnds> roundEnds(const btCollisionShape& shape) {
   if (shape.getShapeType() == CYLINDER_SHAPE_PROXYTYPE) {
@@ -42,7 +43,7 @@ std::optional<RoundEnds> roundEnds(const btCollisionShape& shape) {
   const btScalar r0 = ringAt(hull, bottom), r1 = ringAt(hull, top);
   int onLevels = 0;
   for (int p = 0; p < hull.getNumPoints(); ++p) {
-    if (std::abs(points[p].y() - bottom) <= kRing || std::abs(points[p].y() - top) <= kRing) ++onLevels;
+    if (std::abs(points[p].y() - bottom) <= kRingTolerance || std::abs(points[p].y() - top) <= kRingTolerance) ++onLevels;
   }
   if (r0 < 0 || r1 < 0 || r0 + r1 <= 0 || onLevels != hull.getNumPoints()) return std::nullopt;
   const btScalar m = hull.getMargin();

@@ -16,6 +16,19 @@ struct RoundEnds {
   btScalar radius[2];  ///< m, 0 at a cone's point
 };
 
+/// Points of a hull level with each other, or at one distance from its
+/// axis, within this, m.
+inline constexpr btScalar kRingTolerance = 1e-9;
+
+/// The points of `hull` at height `level` (within kRingTolerance): how
+/// many, and their least and greatest distance from its y axis, m.
+struct HullRing {
+  int count = 0;
+  btScalar low = BT_LARGE_FLOAT;
+  btScalar high = 0;
+};
+HullRing hullRing(const btConvexHullShape& hull, btScalar level);
+
 /// The ends of `shape` if it is a cylinder or a hull of two rings (or a
 /// ring and a point) about its y axis; none for any other shape.
 std::optional<RoundEnds> roundEnds(const btCollisionShape& shape);
