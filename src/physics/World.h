@@ -161,6 +161,12 @@ class World : public Simulation {
   /// When, in the step just taken, entities `entity` and `other` (user
   /// indices) first struck each other; none if they did not.
   std::optional<double> firstStruck(int entity, int other) const;
+  void sortStruck();
+  struct StruckTime {
+    std::pair<int, int> pair;  // user indices, the lower first
+    double at;                 // s after the step's start
+  };
+  std::vector<StruckTime> struckTimes_;  // sortStruck's
   void record(const Event& e);
   // A push of `impulse` N s given to `shape` now: it wakes, and the event says so.
   void recordPush(Shape& shape, Event e);

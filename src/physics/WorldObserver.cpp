@@ -60,15 +60,24 @@ double World::landingTime(const Tracker& tracker, const Shape& shape, int suppor
 }
 
 std::optional<double> World::firstStruck(int entity, int other) const {
-  std::optional<double> first;
+  const std::pair<int, int> key{std::min(entity, other), std::max(entity, other)};
+  const auto at = std::lower_bound(struckTimes_.begin(), struckTimes_.end(), key,
+                                   [](const StruckTime& s, const std::pair<int, int>& k) { return s.pair < k; });
+  if (at == struckTimes_.end() || at->pair != key) return std::nullopt;
+  return time_ - settings_.timestep + at->at;
+}
+
+// The pairs struck in the last step, by pair and then time, so that
+// firstStruck finds a pair's first by bisection.
+void World::sortStruck() {
+  struckTimes_.clear();
   for (const DynamicsWorld::Struck& pair : struck_) {
     const int a = pair.a->getUserIndex(), b = pair.b->getUserIndex();
-    if ((a == entity && b == other) || (a == other && b == entity)) {
-      const double t = time_ - settings_.timestep + pair.at;
-      if (!first || t < *first) first = t;
-    }
+    struckTimes_.push_back({{std::min(a, b), std::max(a, b)}, pair.at});
   }
-  return first;
+  std::sort(struckTimes_.begin(), struckTimes_.end(), [](const StruckTime& x, const StruckTime& y) {
+    return x.pair != y.pair ? x.pair < y.pair : x.at < y.at;
+  });
 }
 
 // Reads the contact manifolds and every entity's motion after a step, and
@@ -163,6 +172,7 @@ void World::observeTouching(bool emit) {
   // contacts_ is sorted by entity and other, so the pairs come in order.
   std::vector<std::pair<int, int>>& touching = touchingNow_;
   touching.clear();
+  if (emit) sortStruck();
   for (const Contact& c : contacts_) {
     if (c.other < 0 || c.entity > c.other) continue;  // each entity pair once
     const auto pair = std::make_pair(c.entity, c.other);

@@ -240,6 +240,7 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
     int loaded = 0;  // slipping points carrying load
   };
   std::vector<std::pair<ContactKey, SlipUse>> slipUse_;
+  std::vector<std::pair<ContactKey, std::size_t>> slipOrder_;  // slipping's points by contact
   std::vector<std::pair<btVector3, btVector3>> endVelocities_;  // each body's at the last part's end
   BodySet kicked_;  // noteKicked's
   std::vector<btVector3> startVelocities_;

@@ -76,26 +76,26 @@ const DynamicsWorld::ResistedSlip* DynamicsWorld::resistedSlip(const ContactKey&
 void DynamicsWorld::findSlipStops(const std::vector<Slip>& slipping) {
   slips_.clear();
   // Per contact: a body may slip on two at once (a cube under a rider on
-  // the table), and one may stop while the other slips on.
-  // By contact (slipping lists a contact's points together, so each is
-  // found at the back or added), then put in the order of their keys.
+  // the table), and one may stop while the other slips on. The points are
+  // put in the order of their contacts' keys, each contact's in the order
+  // slipping lists them (a contact of a compound may have several
+  // manifolds, not listed together), and summed contact by contact.
+  std::vector<std::pair<ContactKey, std::size_t>>& order = slipOrder_;
+  order.clear();
+  for (std::size_t i = 0; i < slipping.size(); ++i) order.emplace_back(contactOf(*slipping[i].manifold), i);
+  std::stable_sort(order.begin(), order.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<std::pair<ContactKey, SlipUse>>& used = slipUse_;
   used.clear();
-  for (const auto& [manifold, point, velocity] : slipping) {
-    const ContactKey key = contactOf(*manifold);
-    auto at = std::find_if(used.rbegin(), used.rend(), [&](const auto& u) { return u.first == key; });
-    if (at == used.rend()) {
-      used.emplace_back(key, SlipUse{manifold});
-      at = used.rbegin();
-    }
-    SlipUse& u = at->second;
+  for (const auto& [key, i] : order) {
+    const auto& [manifold, point, velocity] = slipping[i];
+    if (used.empty() || used.back().first != key) used.emplace_back(key, SlipUse{manifold});
+    SlipUse& u = used.back().second;
     u.friction += std::hypot(point->m_appliedImpulseLateral1, point->m_appliedImpulseLateral2);
     u.limit += point->m_combinedFriction * point->m_appliedImpulse;
     if (point->m_appliedImpulse > 0) ++u.loaded;
     const btVector3 n = point->m_normalWorldOnB * point->m_appliedImpulse;
     u.normal += n.dot(u.normal) < 0 ? -n : n;
   }
-  std::sort(used.begin(), used.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   // A contact slides while its friction is at its limit. Only one that slid
   // through the part before, or into this one (slidIn), stops in it (a
   // slip that starts in a part, a rolling body's made by its rolling
