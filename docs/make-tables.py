@@ -160,13 +160,14 @@ def piles(tabletop):
     out = bench(tabletop, "--piles", ",".join(map(str, PILES)), "--pile-budget", str(PILE_BUDGET))
     rows, k = out["piles"], out["pile_exponents"]
     lines = ["| bodies | tabletop ms per s | Bullet ms per s | cost ratio | drift over 1 s, mm (Bullet) "
-             "| deepest, mm (Bullet) | energy gained, J (Bullet) |", "|---" * 7 + "|"]
+             "| deepest, mm (Bullet) | energy gained, J (Bullet) | parts per step | largest island |", "|---" * 9 + "|"]
     for r in rows:
         lines.append(f"| {r['bodies']} | {cost(r['tabletop_ms_per_s'])} | {cost(r['bullet_ms_per_s'])} "
                      f"| {r['ratio']:.2g} | {millimetres(r['tabletop_drift_m'])} ({millimetres(r['bullet_drift_m'])}) "
                      f"| {millimetres(r['tabletop_penetration_m'])} ({millimetres(r['bullet_penetration_m'])}) "
-                     f"| {r['tabletop_energy_gain_j']:.2g} ({r['bullet_energy_gain_j']:.2g}) |")
-    lines.append(f"| cost exponent = | {k['tabletop']:.2f} | {k['bullet']:.2f} | | | | |")
+                     f"| {r['tabletop_energy_gain_j']:.2g} ({r['bullet_energy_gain_j']:.2g}) "
+                     f"| {r['parts_per_step']:.2f} | {r['largest_island']} |")
+    lines.append(f"| cost exponent = | {k['tabletop']:.2f} | {k['bullet']:.2f} | | | | | | |")
     return lines
 
 

@@ -146,6 +146,8 @@ ResultTable pileTable(const std::vector<PilePoint>& points) {
                {"tabletop_energy_gain_j", "gain [J]"},
                {"bullet_energy_gain_j", "Bullet gain [J]"},
                {"simulated_s", "simulated [s]"},
+               {"parts_per_step", "parts/step"},
+               {"largest_island", "largest island"},
                {"note", "note"}};
   // A settled figure, or "-" when the window was not reached.
   const auto settled = [](const PileSide& s, double value, double scale, int digits) {
@@ -158,7 +160,8 @@ ResultTable pileTable(const std::vector<PilePoint>& points) {
                       settled(a, a.settled.drift, 1e3, 3), settled(b, b.settled.drift, 1e3, 3),
                       settled(a, a.settled.penetration, 1e3, 3), settled(b, b.settled.penetration, 1e3, 3),
                       settled(a, a.settled.energyGain, 1.0, 4), settled(b, b.settled.energyGain, 1.0, 4),
-                      cell(a.simulated, 3), cell(a.note)});
+                      cell(a.simulated, 3), cell(a.partsPerStep, 2),
+                      cell(a.largestIsland, std::to_string(a.largestIsland)), cell(a.note)});
   }
   t.notes.push_back("growth exponent k of cost ~ bodies^k (least squares over the sizes):");
   for (const auto& [engine, k] : pileExponents(points)) t.notes.push_back("  " + padded(engine, 26) + fixed(k, 2));

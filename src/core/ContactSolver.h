@@ -33,6 +33,11 @@ struct SolverUse {
   /// Steps whose events used up the parts a step may be cut into (the
   /// last part then took what was left whole, its events unsplit).
   long partBudget = 0;
+  /// Parts the steps were taken in, all told (a step not cut is one): each
+  /// part runs the collision and the solve for the whole world.
+  long parts = 0;
+  /// The most moving bodies one island solved held.
+  long largestIsland = 0;
 };
 
 /// The largest island (normal and friction rows together) the Dantzig

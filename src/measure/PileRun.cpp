@@ -43,6 +43,9 @@ PileSide runTabletop(const Scenario& pile, double budgetSeconds) {
     side.note = std::string("diverged: ") + e.what();
   }
   side.simulated = world->time();
+  const double steps = std::round(side.simulated / pile.settings.timestep);
+  if (steps > 0) side.partsPerStep = static_cast<double>(world->solverUse().parts) / steps;
+  side.largestIsland = world->solverUse().largestIsland;
   side.costMsPerSecond = side.simulated > 0 ? 1e3 * wall / side.simulated : 0.0;
   side.settled = watch.result();
   return side;

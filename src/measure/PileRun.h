@@ -15,6 +15,10 @@ struct PileSide {
   double simulated = 0;        ///< s actually run
   Settled settled;             ///< over the window after the drop
   std::string note;            ///< why the run stopped early, if it did
+  /// tabletop's: the mean number of parts a step was cut into (each runs
+  /// the collision and the solve for the whole pile); 1 for Bullet.
+  double partsPerStep = 1;
+  long largestIsland = 0;  ///< tabletop's: the most bodies one island held
 };
 
 /// A pile of `bodies` in tabletop and in Bullet's own pipeline (PlainBullet).

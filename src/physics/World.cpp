@@ -340,6 +340,7 @@ WorkCount World::work() const {
 SolverUse World::solverUse() const {
   SolverUse use = pipeline_.solver->use();
   use.partBudget = pipeline_.world->partBudgetSteps();
+  use.parts = pipeline_.world->parts();
   return use;
 }
 

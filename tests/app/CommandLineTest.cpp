@@ -410,11 +410,16 @@ TEST(CommandLine, BenchDropsPilesAgainstBullet) {
   ASSERT_EQ(j["piles"].size(), 2u);
   for (const char* key : {"bodies", "tabletop_ms_per_s", "bullet_ms_per_s", "ratio", "tabletop_drift_m",
                           "bullet_drift_m", "tabletop_penetration_m", "bullet_penetration_m",
-                          "tabletop_energy_gain_j", "bullet_energy_gain_j", "simulated_s", "note"}) {
+                          "tabletop_energy_gain_j", "bullet_energy_gain_j", "simulated_s", "parts_per_step", "largest_island", "note"}) {
     EXPECT_TRUE(j["piles"][1].contains(key)) << key;
   }
   EXPECT_EQ(j["piles"][1]["bodies"], 8);
   EXPECT_DOUBLE_EQ(j["piles"][1]["simulated_s"].get<double>(), 2.5);
+  // A step is one part at least, and kMaxParts (8) at most.
+  EXPECT_GE(j["piles"][1]["parts_per_step"].get<double>(), 1.0);
+  EXPECT_LE(j["piles"][1]["parts_per_step"].get<double>(), 8.0);
+  EXPECT_GE(j["piles"][1]["largest_island"].get<long>(), 1);
+  EXPECT_LE(j["piles"][1]["largest_island"].get<long>(), 8);
   EXPECT_TRUE(j["piles"][1]["tabletop_drift_m"].is_number());
   EXPECT_TRUE(j["piles"][1]["bullet_drift_m"].is_number());
   EXPECT_TRUE(j["pile_exponents"].contains("tabletop"));

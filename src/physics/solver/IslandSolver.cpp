@@ -293,6 +293,7 @@ btScalar IslandSolver::solveGroupCacheFriendlySetup(btCollisionObject** bodies, 
                                                     const btContactSolverInfo& info, btIDebugDraw* debugDrawer) {
   way_ = sweepsOnly_ ? Way::Sweep : chooseWay(manifolds, numManifolds, numConstraints);
   counted_ = !sweepsOnly_ && numManifolds > 0;
+  if (counted_) use_.largestIsland = std::max<long>(use_.largestIsland, numBodies);
   if (way_ == Way::LongSweeps) longSweepsTaken_ = true;
   if (way_ != Way::Pivot && !sweepsOnly_) {
     for (int i = 0; i < numBodies; ++i) swept_.insert(bodies[i]);

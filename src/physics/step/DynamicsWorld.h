@@ -88,6 +88,8 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   const std::vector<Struck>& struck() const { return struck_; }
   /// Steps whose events used up the parts a step may be cut into.
   long partBudgetSteps() const { return partBudgetSteps_; }
+  /// Parts taken so far, all told.
+  long parts() const { return parts_; }
   /// Parts x bodies and parts x contact points so far (WorkCount.h).
   const WorkCount& work() const { return work_; }
 
@@ -189,6 +191,7 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   double stepLength_ = 0.0;  // the step being taken, s
   std::vector<Struck> struck_;
   long partBudgetSteps_ = 0;
+  long parts_ = 0;
   bool solved_ = false;      // a solve has run: contacts carry their loads
   HeldGaps::Storage heldGaps_;
   HeldPlaces::Storage heldPlaces_;

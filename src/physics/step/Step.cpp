@@ -57,6 +57,7 @@ void DynamicsWorld::step(double dt) {
     part.length = left;
     part.mayCut = index + 1 < kMaxParts && smoothAcceleration_ > 0;
     stepPart(part);
+    ++parts_;
     lastStep_ = part.length;
     left = part.length < left ? left - part.length : 0.0;
     if (left > 0 && index + 2 == kMaxParts) ++partBudgetSteps_;

@@ -59,6 +59,9 @@ struct Outcome {
   std::vector<Vec3> velocity;
   Vec3 direction;
   long partBudget = 0;  // steps that used every part (SolverUse)
+  long parts = 0;       // parts taken, all told
+  long steps = 0;
+  long largest = 0;     // the most balls one island held
 };
 
 Outcome run(const Row& r) {
@@ -91,6 +94,9 @@ Outcome run(const Row& r) {
   Outcome o;
   o.direction = u;
   o.partBudget = run.solverUse.partBudget;
+  o.parts = run.solverUse.parts;
+  o.steps = run.steps;
+  o.largest = run.solverUse.largestIsland;
   const std::vector<EntityState>& end = run.entities;
   for (std::size_t k = 0; k < end.size(); ++k) {
     const Vec3& p = end[k].position;
@@ -140,6 +146,7 @@ TEST(BallRow, TouchingTheStruckEndMeetsTheRestAsOneBody) {
         for (const double rate : {30.0, 60.0, 240.0, 1000.0}) {
           const Row r{balls, 0.0, speed, angle, rate};
           const Outcome o = run(r);
+          EXPECT_EQ(o.largest, balls) << describe(r);  // the touching row is one island
           const double back = (2.0 - balls) * speed / balls, on = 2.0 * speed / balls;
           expectVelocity(o, 0, back, r);
           EXPECT_NEAR(o.along[0], back * kDuration, 1e-4) << describe(r);
@@ -159,8 +166,14 @@ TEST(BallRow, TouchingTheStruckEndMeetsTheRestAsOneBody) {
 // 30 Hz step; twelve, 1 mm apart and struck at 1 m/s, would need eleven
 // parts in their first step.
 TEST(BallRow, AStepWhoseImpactsUseEveryPartIsCounted) {
-  EXPECT_EQ(run({5, 0.002, 0.8, 0.0, 30.0}).partBudget, 0);
-  EXPECT_GE(run({12, 0.001, 1.0, 0.0, 30.0}).partBudget, 1);
+  const Outcome five = run({5, 0.002, 0.8, 0.0, 30.0});
+  EXPECT_EQ(five.partBudget, 0);
+  // Every step is a part at least; the step of the four meetings is five.
+  EXPECT_GE(five.parts, five.steps + 4);
+  const Outcome twelve = run({12, 0.001, 1.0, 0.0, 30.0});
+  EXPECT_GE(twelve.partBudget, 1);
+  EXPECT_LE(twelve.parts, 8 * twelve.steps);
+  EXPECT_GE(twelve.parts, twelve.steps + 7);
 }
 
 }  // namespace
