@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include <BulletCollision/CollisionDispatch/btCollisionObject.h>
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 
 namespace tabletop {
