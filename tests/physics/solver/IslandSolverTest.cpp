@@ -12,6 +12,8 @@
 #include <btBulletDynamicsCommon.h>
 #include <gtest/gtest.h>
 
+#include "support/HandBuiltContacts.h"
+
 namespace tabletop {
 namespace {
 
@@ -42,26 +44,12 @@ struct Island {
   btPersistentManifold* manifold = nullptr;
 
   Island(const btVector3& velocity, double mu) {
-    btVector3 inertia;
-    cubeShape.calculateLocalInertia(kMass, inertia);
-    cube = std::make_unique<btRigidBody>(btRigidBody::btRigidBodyConstructionInfo(kMass, nullptr, &cubeShape, inertia));
-    cube->setWorldTransform(btTransform(btQuaternion::getIdentity(), btVector3(0, kHalf, 0)));
-    cube->setLinearVelocity(velocity);
-    cube->applyCentralForce(btVector3(0, -kMass * kG, 0));
+    cube = test::movingBody(cubeShape, kMass, btVector3(0, kHalf, 0), velocity, kG);
     ground.setCollisionShape(&groundShape);
     ground.setWorldTransform(btTransform(btQuaternion::getIdentity(), btVector3(0, -0.1, 0)));
     ground.setCollisionFlags(btCollisionObject::CF_STATIC_OBJECT);
     manifold = dispatcher.getNewManifold(cube.get(), &ground);
-    for (const double x : {-kHalf, kHalf}) {
-      for (const double z : {-kHalf, kHalf}) {
-        const btVector3 corner(x, 0, z);
-        btManifoldPoint point(btVector3(x, -kHalf, z), btVector3(x, 0.1, z), btVector3(0, 1, 0), 0);
-        point.m_positionWorldOnA = corner;
-        point.m_positionWorldOnB = corner;
-        point.m_combinedFriction = mu;
-        manifold->addManifoldPoint(point);
-      }
-    }
+    test::addBaseCorners(*manifold, kHalf, mu);
   }
   ~Island() { dispatcher.releaseManifold(manifold); }
 

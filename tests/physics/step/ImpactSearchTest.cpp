@@ -10,20 +10,15 @@
 
 #include <gtest/gtest.h>
 
+#include "support/HandBuiltContacts.h"
+
 namespace tabletop {
 namespace {
 
 constexpr double kG = 9.81;  // m/s^2
 
-// A body of `mass` kg with its weight applied as a force.
 std::unique_ptr<btRigidBody> weighted(btCollisionShape& shape, double mass, const btVector3& at, const btVector3& v) {
-  btVector3 inertia;
-  shape.calculateLocalInertia(mass, inertia);
-  auto body = std::make_unique<btRigidBody>(btRigidBody::btRigidBodyConstructionInfo(mass, nullptr, &shape, inertia));
-  body->setWorldTransform(btTransform(btQuaternion::getIdentity(), at));
-  body->setLinearVelocity(v);
-  body->applyCentralForce(btVector3(0, -mass * kG, 0));
-  return body;
+  return test::movingBody(shape, mass, at, v, kG);
 }
 
 // A point of `manifold` `gap` m below A's `onA`, the normal on B up.

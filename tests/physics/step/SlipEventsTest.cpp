@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include "support/HandBuiltContacts.h"
+
 namespace tabletop {
 namespace {
 
@@ -30,23 +32,10 @@ struct SlidingCube {
   btPersistentManifold* manifold = nullptr;
 
   SlidingCube(const btVector3& velocity, double mu) {
-    btVector3 inertia;
-    shape.calculateLocalInertia(kMass, inertia);
-    cube = std::make_unique<btRigidBody>(btRigidBody::btRigidBodyConstructionInfo(kMass, nullptr, &shape, inertia));
-    cube->setWorldTransform(btTransform(btQuaternion::getIdentity(), btVector3(0, kHalf, 0)));
-    cube->setLinearVelocity(velocity);
+    cube = test::movingBody(shape, kMass, btVector3(0, kHalf, 0), velocity, 0.0);
     floor.setCollisionShape(&floorShape);
     manifold = dispatcher.getNewManifold(cube.get(), &floor);
-    for (const double x : {-kHalf, kHalf}) {
-      for (const double z : {-kHalf, kHalf}) {
-        const btVector3 corner(x, 0, z);
-        btManifoldPoint point(btVector3(x, -kHalf, z), corner, btVector3(0, 1, 0), 0);
-        point.m_positionWorldOnA = corner;
-        point.m_positionWorldOnB = corner;
-        point.m_combinedFriction = mu;
-        manifold->addManifoldPoint(point);
-      }
-    }
+    test::addBaseCorners(*manifold, kHalf, mu);
   }
   ~SlidingCube() { dispatcher.releaseManifold(manifold); }
 };
@@ -95,7 +84,9 @@ TEST(SlipEvents, ASlipStoppedByTheSolveStoppedAtVOverMuG) {
         const bool inside = share > 0.01 && share < 0.99;
         EXPECT_NEAR(turn.time, inside ? v0 / (mu * kG) : length, 1e-15) << where;
         EXPECT_EQ(turn.manifold != nullptr, inside) << where;
-        if (inside) EXPECT_FALSE(turn.reversed) << where;
+        if (inside) {
+          EXPECT_FALSE(turn.reversed) << where;
+        }
       }
     }
   }
