@@ -15,8 +15,9 @@ struct PileSide {
   double simulated = 0;        ///< s actually run
   Settled settled;             ///< over the window after the drop
   std::string note;            ///< why the run stopped early, if it did
-  /// tabletop's: the mean number of parts a step was cut into (each runs
-  /// the collision and the solve for the whole pile); 1 for Bullet.
+  /// tabletop's: the mean number of parts taken per step of the scene's
+  /// rate (each runs the collision and the solve for the whole pile), the
+  /// parts of its equal sub-steps (World::substeps) together; 1 for Bullet.
   double partsPerStep = 1;
   long largestIsland = 0;  ///< tabletop's: the most bodies one island held
 };

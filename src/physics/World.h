@@ -161,6 +161,7 @@ class World : public Simulation {
   /// When, in the step just taken, entities `entity` and `other` (user
   /// indices) first struck each other; none if they did not.
   std::optional<double> firstStruck(int entity, int other) const;
+  // Sorts struck_ into struckTimes_ for firstStruck, once per look.
   void sortStruck();
   struct StruckTime {
     std::pair<int, int> pair;  // user indices, the lower first

@@ -415,7 +415,8 @@ TEST(CommandLine, BenchDropsPilesAgainstBullet) {
   }
   EXPECT_EQ(j["piles"][1]["bodies"], 8);
   EXPECT_DOUBLE_EQ(j["piles"][1]["simulated_s"].get<double>(), 2.5);
-  // A step is one part at least, and kMaxParts (8) at most.
+  // A step is one part at least; this small pile's steps stay within one
+  // budget of kMaxParts (8) parts each.
   EXPECT_GE(j["piles"][1]["parts_per_step"].get<double>(), 1.0);
   EXPECT_LE(j["piles"][1]["parts_per_step"].get<double>(), 8.0);
   EXPECT_GE(j["piles"][1]["largest_island"].get<long>(), 1);
