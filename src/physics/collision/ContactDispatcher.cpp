@@ -48,7 +48,8 @@ void ContactDispatcher::nearCallback(btBroadphasePair& pair, btCollisionDispatch
   }
   if (pair.m_algorithm == nullptr) return;
   // Only a ContactDispatcher sets this callback.
-  ContactResult result(&wrap0, &wrap1, static_cast<ContactDispatcher&>(dispatcher).found_);
+  auto& self = static_cast<ContactDispatcher&>(dispatcher);
+  ContactResult result(&wrap0, &wrap1, self.found_, self.offered_);
   // Two spheres: Bullet's algorithm reports them only once they overlap,
   // unless asked for points this far apart. Every other pair is found up
   // to the breaking threshold ahead of touching, and an impact between
@@ -58,6 +59,7 @@ void ContactDispatcher::nearCallback(btBroadphasePair& pair, btCollisionDispatch
   }
   if (info.m_dispatchFunc == btDispatcherInfo::DISPATCH_DISCRETE) {
     pair.m_algorithm->processCollision(&wrap0, &wrap1, info, &result);
+    result.keepWidestFlatFour();
   } else {
     const btScalar impact = pair.m_algorithm->calculateTimeOfImpact(const_cast<btCollisionObject*>(object0),
                                                                     const_cast<btCollisionObject*>(object1), info,

@@ -32,8 +32,10 @@ class ContactDispatcher : public btCollisionDispatcher {
   std::unique_ptr<btConvexConvexAlgorithm::CreateFunc> multipoint_;
   SolidOnPlaneAlgorithm::CreateFunc planeFinder_;
   std::vector<std::unique_ptr<SolidOnFaceAlgorithm::CreateFunc>> faceFinders_;  // one per row
-  // The points each pair's ContactResult finds, one storage for all.
+  // The points each pair's ContactResult finds and is offered, one
+  // storage for all.
   ContactResult::FoundPoints found_;
+  OfferedPoints offered_;
 
   // Bullet's default near callback with a ContactResult in place of its
   // btManifoldResult.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <functional>
 
+#include "physics/collision/FlatFour.h"
 #include "physics/shapes/ShapeKinds.h"
 
 namespace tabletop {
@@ -85,17 +86,6 @@ bool ballOnSharpBox(const btCollisionObjectWrapper& a, const btCollisionObjectWr
   return true;
 }
 
-// Points this near in depth (m) are one face's: a face resting flat on
-// another is clipped to corners whose depths differ by rounding.
-constexpr double kFlatDepths = 1e-5;
-
-// Twice the area spanned by four points of one contact plane: the largest
-// of the three ways to pair them as diagonals (for a convex quadrilateral,
-// its diagonals' cross product).
-double spannedArea(const btVector3& a, const btVector3& b, const btVector3& c, const btVector3& d) {
-  return std::max({(a - c).cross(b - d).length(), (a - b).cross(c - d).length(), (a - d).cross(b - c).length()});
-}
-
 // What flatPointToReplace answers besides a point's index.
 constexpr int kLeaveOut = -1;
 constexpr int kBulletsChoice = -2;
@@ -139,9 +129,10 @@ int flatPointToReplace(const btPersistentManifold& manifold, const btManifoldPoi
 }  // namespace
 
 ContactResult::ContactResult(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1,
-                             FoundPoints& found)
-    : btManifoldResult(body0, body1), found_(found) {
+                             FoundPoints& found, OfferedPoints& offered)
+    : btManifoldResult(body0, body1), found_(found), offered_(offered) {
   found_.clear();
+  offered_.clear();
 }
 
 double ContactResult::mergeRadius(const btCollisionShape& a, const btCollisionShape& b, double breakingThreshold) {
@@ -193,6 +184,7 @@ void ContactResult::addContactPoint(const btVector3& foundNormal, const btVector
   point.m_partId1 = swapped ? m_partId0 : m_partId1;
   point.m_index0 = swapped ? m_index1 : m_index0;
   point.m_index1 = swapped ? m_index0 : m_index1;
+  offered_.offer(manifold, point);
 
   const auto foundNow = [&](int index) {
     const std::pair<const btPersistentManifold*, int> key(&manifold, index);
@@ -224,6 +216,45 @@ void ContactResult::addContactPoint(const btVector3& foundNormal, const btVector
   } else if (replaced == kBulletsChoice) {
     const int added = manifold.addManifoldPoint(point);
     if (!foundNow(added)) found_.emplace_back(&manifold, added);
+  }
+}
+
+void ContactResult::keepWidestFlatFour() {
+  for (const OfferedPoints::Offers& offers : offered_.offers()) {
+    auto& manifold = const_cast<btPersistentManifold&>(*offers.manifold);
+    if (manifold.getNumContacts() != MANIFOLD_CACHE_SIZE) continue;
+    bool allFound = true;
+    for (int p = 0; p < MANIFOLD_CACHE_SIZE; ++p) {
+      allFound = allFound && std::find(found_.begin(), found_.end(), std::make_pair(offers.manifold, p)) != found_.end();
+    }
+    std::array<int, 4> chosen;
+    if (!allFound || !widestFour(offers, chosen)) continue;
+    // A chosen point the manifold holds stays as it is; each other goes
+    // in place of the nearest point not chosen, with its impulses, as
+    // Bullet replaces a point (replaceContactPoint).
+    bool slotChosen[MANIFOLD_CACHE_SIZE] = {false, false, false, false};
+    std::array<bool, 4> placed = {false, false, false, false};
+    for (int k = 0; k < 4; ++k) {
+      const btVector3& place = offers.points[chosen[k]].m_localPointA;
+      for (int p = 0; p < MANIFOLD_CACHE_SIZE && !placed[k]; ++p) {
+        if (!slotChosen[p] && manifold.getContactPoint(p).m_localPointA == place) slotChosen[p] = placed[k] = true;
+      }
+    }
+    for (int k = 0; k < 4; ++k) {
+      if (placed[k]) continue;
+      const btManifoldPoint& point = offers.points[chosen[k]];
+      int nearest = -1;
+      double nearestSquared = 0;
+      for (int p = 0; p < MANIFOLD_CACHE_SIZE; ++p) {
+        if (slotChosen[p]) continue;
+        const double squared = featureApart2(manifold.getContactPoint(p), point.m_localPointA, point.m_localPointB);
+        if (nearest < 0 || squared < nearestSquared) nearest = p, nearestSquared = squared;
+      }
+      const int lifeTime = manifold.getContactPoint(nearest).getLifeTime();
+      manifold.replaceContactPoint(point, nearest);
+      manifold.getContactPoint(nearest).m_lifeTime = lifeTime;
+      slotChosen[nearest] = true;
+    }
   }
 }
 

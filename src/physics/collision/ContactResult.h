@@ -5,6 +5,8 @@
 
 #include <btBulletCollisionCommon.h>
 
+#include "physics/collision/FlatFour.h"
+
 namespace tabletop {
 
 /// Where the narrow phase puts the contact points it finds: Bullet's
@@ -33,8 +35,9 @@ class ContactResult : public btManifoldResult {
   /// for every pair in every step, so that the storage is reused.
   using FoundPoints = std::vector<std::pair<const btPersistentManifold*, int>>;
 
-  /// Cleared here: each result starts with none found.
-  ContactResult(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1, FoundPoints& found);
+  /// Cleared here, as `offered`: each result starts with none found.
+  ContactResult(const btCollisionObjectWrapper* body0, const btCollisionObjectWrapper* body1, FoundPoints& found,
+                OfferedPoints& offered);
 
   void addContactPoint(const btVector3& normalOnBInWorld, const btVector3& pointInWorld, btScalar depth) override;
 
@@ -42,6 +45,11 @@ class ContactResult : public btManifoldResult {
   /// point replaces it: half the smallest extent of either shape, and never
   /// more than `breakingThreshold`.
   static double mergeRadius(const btCollisionShape& a, const btCollisionShape& b, double breakingThreshold);
+
+  /// After the pair's pass: a manifold offered more than four points of one
+  /// flat face, all four it holds found in the pass, keeps the widest four
+  /// of them all (FlatFour.h), not those the order of offering left it.
+  void keepWidestFlatFour();
 
   /// While on, each point added is a point of its own: it replaces a kept
   /// point within the merge radius only if no other point added since did
@@ -67,6 +75,7 @@ class ContactResult : public btManifoldResult {
 
   bool distinct_ = false;
   FoundPoints& found_;
+  OfferedPoints& offered_;
 };
 
 /// Carries warm-start impulses over Bullet's compound algorithm, which
