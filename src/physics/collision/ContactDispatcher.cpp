@@ -1,5 +1,7 @@
 #include "physics/collision/ContactDispatcher.h"
 
+#include <algorithm>
+
 #include "physics/collision/PairTable.h"
 
 namespace tabletop {
@@ -38,6 +40,9 @@ void ContactDispatcher::nearCallback(btBroadphasePair& pair, btCollisionDispatch
   const auto* object0 = static_cast<const btCollisionObject*>(pair.m_pProxy0->m_clientObject);
   const auto* object1 = static_cast<const btCollisionObject*>(pair.m_pProxy1->m_clientObject);
   if (!dispatcher.needsCollision(object0, object1)) return;
+  if (const BodySet* aside = static_cast<ContactDispatcher&>(dispatcher).aside_) {
+    if (aside->contains(object0) || aside->contains(object1)) return;
+  }
   const btCollisionObjectWrapper wrap0(nullptr, object0->getCollisionShape(), object0, object0->getWorldTransform(),
                                        -1, -1);
   const btCollisionObjectWrapper wrap1(nullptr, object1->getCollisionShape(), object1, object1->getWorldTransform(),
@@ -66,6 +71,41 @@ void ContactDispatcher::nearCallback(btBroadphasePair& pair, btCollisionDispatch
                                                                     &result);
     if (impact < info.m_timeOfImpact) info.m_timeOfImpact = impact;
   }
+}
+
+void ContactDispatcher::setAside(const BodySet& bodies) {
+  aside_ = &bodies;
+  int kept = 0;
+  for (int m = 0; m < m_manifoldsPtr.size(); ++m) {
+    btPersistentManifold* manifold = m_manifoldsPtr[m];
+    if (bodies.contains(manifold->getBody0()) || bodies.contains(manifold->getBody1())) {
+      asideManifolds_.push_back(manifold);
+    } else {
+      manifold->m_index1a = kept;
+      m_manifoldsPtr[kept++] = manifold;
+    }
+  }
+  m_manifoldsPtr.resize(kept);
+}
+
+void ContactDispatcher::bringBack() {
+  for (btPersistentManifold* manifold : asideManifolds_) {
+    manifold->m_index1a = m_manifoldsPtr.size();
+    m_manifoldsPtr.push_back(manifold);
+  }
+  asideManifolds_.clear();
+  aside_ = nullptr;
+}
+
+void ContactDispatcher::releaseManifold(btPersistentManifold* manifold) {
+  const auto at = std::find(asideManifolds_.begin(), asideManifolds_.end(), manifold);
+  if (at != asideManifolds_.end()) {
+    // Back in the list for Bullet to take it out.
+    asideManifolds_.erase(at);
+    manifold->m_index1a = m_manifoldsPtr.size();
+    m_manifoldsPtr.push_back(manifold);
+  }
+  btCollisionDispatcher::releaseManifold(manifold);
 }
 
 }  // namespace tabletop

@@ -6,6 +6,7 @@
 #include <btBulletCollisionCommon.h>
 #include <BulletCollision/CollisionDispatch/btConvexConvexAlgorithm.h>
 
+#include "physics/contact/BodySet.h"
 #include "physics/collision/ContactResult.h"
 #include "physics/collision/SolidOnFaceAlgorithm.h"
 #include "physics/collision/SolidOnPlaneAlgorithm.h"
@@ -27,7 +28,20 @@ class ContactDispatcher : public btCollisionDispatcher {
  public:
   explicit ContactDispatcher(btCollisionConfiguration* configuration);
 
+  /// Sets `bodies` aside until bringBack(): no pair with one of them is
+  /// looked at, and the manifolds of each (with the table, the ground or
+  /// another body set aside: StepGroups puts bodies that may touch in one
+  /// group) leave the list every stage reads, kept as they are.
+  void setAside(const BodySet& bodies);
+  /// Puts the manifolds set aside back at the end of the list.
+  void bringBack();
+  const BodySet* asideBodies() const { return aside_; }
+  /// Bullet's, for a manifold set aside too.
+  void releaseManifold(btPersistentManifold* manifold) override;
+
  private:
+  const BodySet* aside_ = nullptr;
+  std::vector<btPersistentManifold*> asideManifolds_;
   // Bullet's convex-convex algorithm with multipoint perturbation.
   std::unique_ptr<btConvexConvexAlgorithm::CreateFunc> multipoint_;
   SolidOnPlaneAlgorithm::CreateFunc planeFinder_;

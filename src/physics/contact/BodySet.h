@@ -32,6 +32,7 @@ class BodySet {
     return static_cast<std::size_t>(index) < marked_.size() && marked_[static_cast<std::size_t>(index)] != 0;
   }
   bool empty() const { return members_.empty() && outside_.empty(); }
+  std::size_t size() const { return members_.size() + outside_.size(); }
   void clear() {
     for (const int index : members_) marked_[static_cast<std::size_t>(index)] = 0;
     members_.clear();

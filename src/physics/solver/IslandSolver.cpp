@@ -293,6 +293,12 @@ btScalar IslandSolver::solveGroupCacheFriendlySetup(btCollisionObject** bodies, 
                                                     const btContactSolverInfo& info, btIDebugDraw* debugDrawer) {
   way_ = sweepsOnly_ ? Way::Sweep : chooseWay(manifolds, numManifolds, numConstraints);
   counted_ = !sweepsOnly_ && numManifolds > 0;
+  impact_ = false;
+  for (int m = 0; impactSweeps_ > 1 && !impact_ && m < numManifolds; ++m) {
+    for (int p = 0; p < manifolds[m]->getNumContacts(); ++p) {
+      if (manifolds[m]->getContactPoint(p).m_contactPointFlags & kImpactFlag) impact_ = true;
+    }
+  }
   if (counted_) use_.largestIsland = std::max<long>(use_.largestIsland, numBodies);
   if (way_ == Way::LongSweeps) longSweepsTaken_ = true;
   if (way_ != Way::Pivot && !sweepsOnly_) {
@@ -315,6 +321,13 @@ btScalar IslandSolver::solveGroupCacheFriendlyIterations(btCollisionObject** bod
                                                          const btContactSolverInfo& info, btIDebugDraw* debugDrawer) {
   const double rows = m_tmpSolverContactConstraintPool.size() + m_tmpSolverContactFrictionConstraintPool.size() +
                       m_tmpSolverNonContactConstraintPool.size() + m_tmpSolverContactRollingFrictionConstraintPool.size();
+  if (impact_ && way_ != Way::Pivot) {
+    btContactSolverInfo more = info;
+    more.m_numIterations *= impactSweeps_;
+    impact_ = false;
+    return solveGroupCacheFriendlyIterations(bodies, numBodies, manifolds, numManifolds, constraints, numConstraints,
+                                             more, debugDrawer);
+  }
   if (way_ == Way::LongSweeps) {
     if (counted_) ++use_.longSwept;
     btContactSolverInfo many = info;

@@ -103,6 +103,9 @@ class IslandSolver : private IslandSolverParts, public btMLCPSolver {
   /// pivoted in the next (setSettling()).
   void setSettling(const BodySet& bodies) { settling_ = &bodies; }
   void forgetSwept() { swept_.clear(); }
+  /// An island holding a point marked as an impact (kImpactFlag) is swept
+  /// this many times the iterations; the others as many as asked.
+  void setImpactSweeps(int times) { impactSweeps_ = times; }
   /// Whether an island since the last call carried a load but was too
   /// large to pivot, and was given the long sweeps; clears it. Such an
   /// island needs steps of at most kLongSweepStep (World::substeps).
@@ -197,6 +200,8 @@ class IslandSolver : private IslandSolverParts, public btMLCPSolver {
   BodySet loaded_;          // setLoaded()
   const BodySet* settling_ = nullptr;  // setSettling()
   bool counted_ = false;    // the island being solved counts in use_
+  int impactSweeps_ = 1;    // setImpactSweeps()
+  bool impact_ = false;     // the island being solved holds an impact
   bool guessed_ = false;    // the island just solved exactly was solved by the guess
   SolverUse use_;
   WorkCount work_;

@@ -17,6 +17,7 @@
 #include "physics/step/ImpactSearch.h"
 #include "physics/step/PartGuards.h"
 #include "physics/step/SlipEvents.h"
+#include "physics/step/StepGroups.h"
 
 namespace tabletop {
 
@@ -88,6 +89,12 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   const std::vector<Struck>& struck() const { return struck_; }
   /// Steps whose events used up the parts a step may be cut into.
   long partBudgetSteps() const { return partBudgetSteps_; }
+  /// Steps taken group by group: their groups without an event took the
+  /// step whole, the others were taken again in parts (GroupSteps.cpp).
+  long groupedSteps() const { return groupedSteps_; }
+  /// Of those, steps taken again whole as one world, because a body
+  /// taken again came to touch one that had taken the step whole.
+  long regroupedSteps() const { return regroupedSteps_; }
   /// Parts taken so far, all told.
   long parts() const { return parts_; }
   /// Parts x bodies and parts x contact points so far (WorkCount.h).
@@ -109,7 +116,11 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
     double left = 0.0;    // s
     double length = 0.0;  // s
     bool mayCut = false;  // the part may end at an event
+    bool grouped = false; // its events are found group by group (GroupSteps.cpp)
   };
+  // The parts of a step of `dt` s, the first found group by group if
+  // `grouped` (Step.cpp).
+  void takeParts(double dt, bool grouped);
   // The stages of a part, in order (Step.cpp).
   void stepPart(Part& part);
   // Stage 1: reads the velocities the part starts from, adds gravity to
@@ -120,6 +131,64 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   void solveContacts(Part& part, btContactSolverInfo& solverInfo);
   void dropStalePoints();
   void cutAtNextEvent(Part& part, const ImpactScan& scan);
+
+  // Groups apart (GroupSteps.cpp). A step's first part finds its events
+  // group by group (StepGroups): with none, or in every group, the step
+  // goes on as one world; with events in some, the first part takes the
+  // whole step for every group, and the groups with events are put back
+  // to the step's start and taken again in parts while the rest are set
+  // aside.
+  enum class Grouping { kNone, kAll, kSome };
+  // Also sets `cut` to the earliest event's time, as cutAtNextEvent finds it.
+  Grouping groupEvents(const Part& part, const ImpactScan& scan, double& cut);
+  void saveStepStart();
+  void savePointsStart();
+  void stepGroupsApart(double dt);
+  // Puts the bodies of `only` (every body if null), or the points of their
+  // manifolds, back as they were at the step's start.
+  void putBackBodies(const BodySet* only);
+  void putBackPoints(const BodySet* only);
+  const BodySet* pointsBack_ = nullptr;  // the retaking part puts these points back
+  bool putBackAll_ = false;              // ... or every point
+  void setAside(const BodySet& calm);
+  void bringBack();
+  // Whether a pair of the broadphase joins a body taken again to one set
+  // aside.
+  bool crossesAside();
+  bool slipCounts(const Slip& slip, double length, double g) const;
+  StepGroups groups_;
+  BodySet eventful_;  // bodies with an event in the first part
+  BodySet retaken_;   // the bodies of their groups
+  BodySet aside_;     // the rest, set aside while those are taken again
+  bool split_ = false;    // the first part found events in some groups
+  bool crossed_ = false;  // crossesAside() in a part taken again
+  long groupedSteps_ = 0;
+  long regroupedSteps_ = 0;
+  struct BodyStart {
+    btRigidBody* body;
+    btTransform place;
+    btVector3 linear, angular;
+    btScalar deactivation;
+    int activation;
+  };
+  std::vector<BodyStart> bodyStart_;
+  struct ManifoldStart {
+    btPersistentManifold* manifold;
+    const btCollisionObject* a;
+    const btCollisionObject* b;
+    int count;
+    btManifoldPoint points[MANIFOLD_CACHE_SIZE];
+  };
+  std::vector<ManifoldStart> manifoldStart_;
+  // What carries from part to part, at the step's start.
+  struct CarriedStart {
+    BodySet settling[2];
+    SlidingContacts sliding;
+    std::vector<std::pair<btVector3, btVector3>> endVelocities;
+  };
+  CarriedStart carriedStart_;
+  btAlignedObjectArray<btRigidBody*> allBodies_;  // while some are set aside
+  std::vector<int> asideActivation_;
   // Stage 7: positions from the velocities (Integration.cpp); bodies
   // touching nothing turn as the free rigid body does (FreeFlight.h).
   void integrate(const Part& part);
@@ -269,6 +338,7 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
     bool reversed;
   };
   std::optional<SlipEnd> lastSlipEnd_;
+  std::optional<SlipEnd> slipEndStart_;  // lastSlipEnd_ at the step's start (GroupSteps.cpp)
   std::vector<std::pair<btRigidBody*, btVector3>> resisted_;  // the part's rolling-resistance impulses, N m s
   // Each resisted contact's part (applyRollingResistance): the friction
   // impulse that takes back the slip the resistance made (N s, over the

@@ -128,7 +128,7 @@ const std::optional<PointBoxes::Box>& PointBoxes::at(const btPersistentManifold&
   return e.box[side];
 }
 
-double earliestFaceExit(btDispatcher& dispatcher, double horizon, PointBoxes& boxes) {
+double earliestFaceExit(btDispatcher& dispatcher, double horizon, PointBoxes& boxes, BodySet* eventful) {
   double earliest = horizon;
   // The time depends on the body, the box and the face alone, which the
   // points of a contact share: each is timed once.
@@ -147,7 +147,9 @@ double earliestFaceExit(btDispatcher& dispatcher, double horizon, PointBoxes& bo
           if (i == carried->face || v[i] == 0) continue;
           const double left = box.half[i] - (v[i] > 0 ? centre[i] : -centre[i]);
           if (!(left > edgeBand(v[i], horizon))) continue;
-          earliest = std::min(earliest, (left + kOnEdge) / std::fabs(v[i]));
+          const double t = (left + kOnEdge) / std::fabs(v[i]);
+          earliest = std::min(earliest, t);
+          if (eventful && t < horizon) eventful->insert(carried->body), eventful->insert(carried->support);
         }
       }
     }

@@ -6,6 +6,7 @@
 
 #include <btBulletDynamicsCommon.h>
 
+#include "physics/contact/BodySet.h"
 #include "physics/step/PartGuards.h"
 
 namespace tabletop {
@@ -55,7 +56,8 @@ class PointBoxes {
 /// touching the upward face of a box reaches that face's edge, moving at
 /// its velocity relative to the box; `horizon` if none, or if the centre
 /// is already within a thousandth of the part's travel of it.
-double earliestFaceExit(btDispatcher& dispatcher, double horizon, PointBoxes& boxes);
+/// With `eventful`, the bodies of every exit within `horizon` are added.
+double earliestFaceExit(btDispatcher& dispatcher, double horizon, PointBoxes& boxes, BodySet* eventful = nullptr);
 
 /// Readies the rows of balls at a box's edge or corner (the centre past
 /// the face), and of two balls, for a part `length` s long of a step

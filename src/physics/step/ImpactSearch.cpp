@@ -80,7 +80,7 @@ double ImpactScan::closingAcceleration(const btPersistentManifold& manifold, con
   return accelerationTowards(*manifold.getBody0(), *manifold.getBody1(), point.m_normalWorldOnB);
 }
 
-double ImpactScan::earliestImpact(double horizon, double impactSpeed) const {
+double ImpactScan::earliestImpact(double horizon, double impactSpeed, BodySet* eventful) const {
   double earliest = horizon;
   for (int m = 0; m < dispatcher_.getNumManifolds(); ++m) {
     const btPersistentManifold& manifold = *dispatcher_.getManifoldByIndexInternal(m);
@@ -90,13 +90,16 @@ double ImpactScan::earliestImpact(double horizon, double impactSpeed) const {
       const double speed = closingSpeed(manifold, point), accel = closingAcceleration(manifold, point);
       const double t = accel == 0 ? ballsMeet(manifold).value_or(timeToClose(point.getDistance(), speed, accel))
                                   : timeToClose(point.getDistance(), speed, accel);
-      if (t < earliest && speed + accel * t > impactSpeed) earliest = t;
+      if (!(t < horizon) || !(speed + accel * t > impactSpeed)) continue;
+      earliest = std::min(earliest, t);
+      if (eventful) eventful->insert(manifold.getBody0()), eventful->insert(manifold.getBody1());
     }
   }
   return earliest;
 }
 
-double ImpactScan::earliestSeparatedImpact(btOverlappingPairCache& pairs, double horizon, double impactSpeed) const {
+double ImpactScan::earliestSeparatedImpact(btOverlappingPairCache& pairs, double horizon, double impactSpeed,
+                                           BodySet* eventful) const {
   double earliest = horizon;
   btManifoldArray& manifolds = storage_.manifolds;
   btBroadphasePairArray& array = pairs.getOverlappingPairArray();
@@ -104,6 +107,7 @@ double ImpactScan::earliestSeparatedImpact(btOverlappingPairCache& pairs, double
     const btBroadphasePair& pair = array[i];
     const auto& a = *static_cast<const btCollisionObject*>(pair.m_pProxy0->m_clientObject);
     const auto& b = *static_cast<const btCollisionObject*>(pair.m_pProxy1->m_clientObject);
+    if (storage_.setAside && (storage_.setAside->contains(&a) || storage_.setAside->contains(&b))) continue;
     const double fastest = fastestPoint(a) + fastestPoint(b);
     if (fastest <= impactSpeed) continue;
     manifolds.resize(0);
@@ -130,7 +134,9 @@ double ImpactScan::earliestSeparatedImpact(btOverlappingPairCache& pairs, double
         // To half the touching distance past touch: the separating-axis
         // test reports faces that only touch as apart.
         const double t = timeToClose(closest.m_distance + 0.5 * kTouching, speed, accel);
-        if (t < earliest && speed + accel * t > impactSpeed) earliest = t;
+        if (!(t < horizon) || !(speed + accel * t > impactSpeed)) continue;
+        earliest = std::min(earliest, t);
+        if (eventful) eventful->insert(&a), eventful->insert(&b);
       }
     }
   }

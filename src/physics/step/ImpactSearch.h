@@ -30,6 +30,7 @@ class ImpactScan {
   struct Storage {
     BodySet held;                 // bodies a touching point (not a bounced one) holds
     btManifoldArray manifolds;    // a pair's manifolds (earliestSeparatedImpact)
+    const BodySet* setAside = nullptr;  // bodies done with the step (StepGroups), if any
   };
   ImpactScan(btDispatcher& dispatcher, Storage& storage);
 
@@ -39,14 +40,19 @@ class ImpactScan {
 
   /// The earliest time within `horizon` at which a point that does not
   /// touch yet closes at more than `impactSpeed`; `horizon` if none.
-  double earliestImpact(double horizon, double impactSpeed) const;
+  /// With `eventful`, the bodies of every such point within `horizon` are
+  /// added to it.
+  double earliestImpact(double horizon, double impactSpeed, BodySet* eventful = nullptr) const;
 
   /// The same for two bodies of a pair in `pairs` that have no contact
   /// point yet, from their closest points (Bullet's GJK). Box pairs need
   /// it: Bullet's separating-axis test, which gives them whole faces,
   /// reports nothing while they are apart. The time is to half kTouching
   /// past touch, where that test reports the faces.
-  double earliestSeparatedImpact(btOverlappingPairCache& pairs, double horizon, double impactSpeed) const;
+  /// A pair with a body set aside for the step (Storage::setAside) is not
+  /// looked at.
+  double earliestSeparatedImpact(btOverlappingPairCache& pairs, double horizon, double impactSpeed,
+                                 BodySet* eventful = nullptr) const;
 
   /// Readies the points still apart of a body nothing touches (and the
   /// points just bounced) for a solve of a part `length` s long whose

@@ -78,7 +78,8 @@ SlipTurn DynamicsWorld::solvePart(Part& part, btContactSolverInfo& solverInfo, c
     solverInfo.m_timeStep = part.length;
     const int iterations = solverInfo.m_numIterations;
     impacts = markImpacts(solverInfo.m_timeStep);
-    const IterationsFor sweeps(solverInfo, impacts ? kImpactSweeps * iterations : iterations);
+    // tabletop's solver gives an impact's own islands the impact sweeps.
+    const IterationsFor sweeps(solverInfo, impacts && !islandSolver_ ? kImpactSweeps * iterations : iterations);
     // The points closing at the part's start that meet inside it even at
     // that speed: a body one of them stops changes its velocity at once,
     // not smoothly. (A part cut at an impact reaches its point only at its end.)
@@ -110,15 +111,7 @@ SlipTurn DynamicsWorld::solvePart(Part& part, btContactSolverInfo& solverInfo, c
     if (secondOrder_) scan.holdMeanVelocity(part.length, stopping_, gaps.storage(), meanTurn_);
     holdEdgeCurvature(*dispatcher, part.length, stepLength_, secondOrder_, gaps.storage(), pointBoxes_);
     holdEdgeLevers(*dispatcher, part.length, places.storage(), pointBoxes_);
-    // A slip counts if its contact slid through the part before, or if it
-    // is more than friction takes in the part (a push's): rolling
-    // resistance makes a small slip of its own at a part's start, which
-    // friction stops at once, and cutting there cut every part of a
-    // rolling ball.
-    const auto counts = [&](const Slip& slip) {
-      return slid(sliding_, contactOf(*slip.manifold)) ||
-             slip.velocity.length() > slip.point->m_combinedFriction * g * part.length;
-    };
+    const auto counts = [&](const Slip& slip) { return slipCounts(slip, part.length, g); };
     std::vector<Slip>& mayTurn = mayTurn_;
     mayTurn.clear();
     if (how == PartSolve::kMayCutAtSlip && !impacts) slipsThatMayTurn(*dispatcher, slipping, counts, touchingAnother_, mayTurn);
@@ -140,6 +133,15 @@ SlipTurn DynamicsWorld::solvePart(Part& part, btContactSolverInfo& solverInfo, c
   partStart_.restore();
   shortenPart(part, turn.time);
   return turn;
+}
+
+// A slip counts if its contact slid through the part before, or if it is
+// more than friction takes in the part (a push's): rolling resistance
+// makes a small slip of its own at a part's start, which friction stops at
+// once, and cutting there cut every part of a rolling ball.
+bool DynamicsWorld::slipCounts(const Slip& slip, double length, double g) const {
+  return slid(sliding_, contactOf(*slip.manifold)) ||
+         slip.velocity.length() > slip.point->m_combinedFriction * g * length;
 }
 
 // After a part cut where a slip turned round or stopped, and solved again.

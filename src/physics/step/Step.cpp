@@ -39,6 +39,7 @@ DynamicsWorld::DynamicsWorld(btDispatcher* dispatcher, btBroadphaseInterface* br
   }
   m_islandManager = &islands_;
   m_ownsIslandManager = false;
+  if (islandSolver_) islandSolver_->setImpactSweeps(kImpactSweeps);
 }
 
 // The step is taken in parts, each ending at the next event inside it
@@ -47,8 +48,18 @@ DynamicsWorld::DynamicsWorld(btDispatcher* dispatcher, btBroadphaseInterface* br
 void DynamicsWorld::step(double dt) {
   stepLength_ = dt;
   struck_.clear();
+  // Groups apart only where a part may be cut, and more than one body
+  // could make more than one group.
+  const bool grouped = smoothAcceleration_ > 0 && m_nonStaticRigidBodies.size() > 1;
+  split_ = false;
+  if (grouped) saveStepStart();
+  takeParts(dt, grouped);
+  if (split_) stepGroupsApart(dt);
+}
+
+void DynamicsWorld::takeParts(double dt, bool grouped) {
   double left = dt;
-  for (int index = 0; left > 0; ++index) {
+  for (int index = 0; left > 0 && !crossed_; ++index) {
     if (lastStep_ > 0) scaleCarriedImpulses(left / lastStep_);
     Part part;
     part.index = index;
@@ -56,6 +67,7 @@ void DynamicsWorld::step(double dt) {
     part.left = left;
     part.length = left;
     part.mayCut = index + 1 < kMaxParts && smoothAcceleration_ > 0;
+    part.grouped = grouped && index == 0;
     stepPart(part);
     ++parts_;
     lastStep_ = part.length;
@@ -89,6 +101,13 @@ void DynamicsWorld::stepPart(Part& part) {
   // 2. Contacts: Bullet's broadphase and narrow phase through tabletop's
   // pair table (collision/ContactDispatcher.h), then its islands.
   performDiscreteCollisionDetection();
+  // A body taken again that comes to touch one set aside: the step is
+  // taken again as one world (GroupSteps.cpp).
+  if (!aside_.empty() && crossesAside()) {
+    crossed_ = true;
+    clearForces();
+    return;
+  }
   calculateSimulationIslands();
   countWork();
   // 3-6. Stale points, restitution, events, the solve.
@@ -159,18 +178,37 @@ void DynamicsWorld::solveContacts(Part& part, btContactSolverInfo& solverInfo) {
   }
   // 3. Stale points.
   dropStalePoints();
+  if (part.grouped) savePointsStart();
+  if (part.index == 0 && (pointsBack_ || putBackAll_)) {
+    putBackPoints(pointsBack_);
+    pointsBack_ = nullptr;
+    putBackAll_ = false;
+  }
   // 4. Restitution: touching points closing at an impact's speed bounce now.
   resolveTouchingImpacts(part, solverInfo);
   // 5. Events: the part ends at the next impact or face exit inside it.
   pointBoxes_.start(*dispatcher);
   const ImpactScan scan(*dispatcher, impactStorage_);
-  if (part.mayCut) cutAtNextEvent(part, scan);
+  // With events in some groups only, the part takes the whole step, uncut;
+  // those groups are taken again after it (GroupSteps.cpp).
+  PartSolve how = part.mayCut && secondOrder_ ? PartSolve::kMayCutAtSlip : PartSolve::kWhole;
+  if (part.grouped) {
+    double cut = part.length;
+    const Grouping grouping = groupEvents(part, scan, cut);
+    if (grouping == Grouping::kSome) {
+      split_ = true;
+      how = PartSolve::kWhole;
+    } else if (cut < part.length) {
+      shortenPart(part, cut);
+    }
+  } else if (part.mayCut) {
+    cutAtNextEvent(part, scan);
+  }
   // 6. The solve. A part in which a slip turns round or stops is cut there
   // and solved again (SlipEvents.h), once: the next part takes what is left.
   const SlipTurn turned = [&] {
     const FrictionAlongLine held(holdFrictionAlongLine());
-    return solvePart(part, solverInfo, scan,
-                     part.mayCut && secondOrder_ ? PartSolve::kMayCutAtSlip : PartSolve::kWhole);
+    return solvePart(part, solverInfo, scan, how);
   }();
   lastSlipEnd_.reset();
   if (!turned.manifold) return;
