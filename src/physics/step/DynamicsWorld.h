@@ -249,7 +249,9 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   // (docs/bullet-corrections.md, "Left").
   double stopSpeed() const { return 0.1 * smoothAcceleration_ * stepLength_; }
 
-  // How many times the settings' iterations an impact gets.
+  // How many times the settings' iterations an island holding an impact
+  // gets (IslandSolver::setImpactSweeps; every island with Bullet's own
+  // solver).
   static constexpr int kImpactSweeps = 5;
   // At most this many parts to a step (the cap on impacts placed at their
   // own time in one step; past it the rest of the step is taken whole).
