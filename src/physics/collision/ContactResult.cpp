@@ -230,8 +230,8 @@ void ContactResult::keepWidestFlatFour() {
     std::array<int, 4> chosen;
     if (!allFound || !widestFour(offers, chosen)) continue;
     // A chosen point the manifold holds stays as it is; each other goes
-    // in place of the nearest point not chosen, with its impulses, as
-    // Bullet replaces a point (replaceContactPoint).
+    // in place of the nearest point not chosen, keeping its impulses and
+    // age, as Bullet replaces a point (replaceContactPoint).
     bool slotChosen[MANIFOLD_CACHE_SIZE] = {false, false, false, false};
     std::array<bool, 4> placed = {false, false, false, false};
     for (int k = 0; k < 4; ++k) {
@@ -250,9 +250,7 @@ void ContactResult::keepWidestFlatFour() {
         const double squared = featureApart2(manifold.getContactPoint(p), point.m_localPointA, point.m_localPointB);
         if (nearest < 0 || squared < nearestSquared) nearest = p, nearestSquared = squared;
       }
-      const int lifeTime = manifold.getContactPoint(nearest).getLifeTime();
       manifold.replaceContactPoint(point, nearest);
-      manifold.getContactPoint(nearest).m_lifeTime = lifeTime;
       slotChosen[nearest] = true;
     }
   }
