@@ -179,7 +179,8 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
     int count;
     btManifoldPoint points[MANIFOLD_CACHE_SIZE];
   };
-  std::vector<ManifoldStart> manifoldStart_;
+  std::vector<ManifoldStart> manifoldStart_;  // in the dispatcher's order
+  std::vector<std::pair<const btPersistentManifold*, std::size_t>> manifoldOrder_;  // by manifold: its index above
   // What carries from part to part, at the step's start.
   struct CarriedStart {
     BodySet settling[2];
