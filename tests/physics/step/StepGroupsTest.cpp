@@ -4,6 +4,7 @@
 
 #include "physics/step/StepGroups.h"
 
+#include <initializer_list>
 #include <memory>
 #include <vector>
 
@@ -40,9 +41,16 @@ struct World {
   ~World() {
     for (auto& b : bodies) world.removeRigidBody(b.get());
   }
-  void pair() {
+  // The bodies of the groups of `seeds`, with the pairs as they stand.
+  BodySet groupsOf(std::initializer_list<btRigidBody*> seeds) {
     world.updateAabbs();
     broadphase.calculateOverlappingPairs(&dispatcher);
+    StepGroups groups;
+    groups.find(moving, *broadphase.getOverlappingPairCache());
+    BodySet from, out;
+    for (btRigidBody* body : seeds) from.insert(body);
+    groups.spread(moving, from, out);
+    return out;
   }
 };
 
@@ -58,28 +66,13 @@ TEST(StepGroups, BodiesWhoseBoxesOverlapAreOneGroupAndTheSlabJoinsNone) {
   btRigidBody* d = w.add(w.cube, 1, btVector3(1.5, 0, 1.5));
   btRigidBody* e = w.add(w.cube, 1, btVector3(1.6, 0, 1.5));
   btRigidBody* alone = w.add(w.cube, 1, btVector3(-1.5, 0, 1.5));
-  w.pair();
-  StepGroups groups;
-  groups.find(w.moving, *w.broadphase.getOverlappingPairCache());
-
-  BodySet seeds, out;
-  seeds.insert(a);
-  groups.spread(w.moving, seeds, out);
-  EXPECT_TRUE(out.contains(a) && out.contains(b) && out.contains(c));
-  EXPECT_FALSE(out.contains(d) || out.contains(e) || out.contains(alone));
-  EXPECT_EQ(out.size(), 3u);
-
-  seeds.clear();
-  seeds.insert(e);
-  seeds.insert(alone);
-  groups.spread(w.moving, seeds, out);
-  EXPECT_TRUE(out.contains(d) && out.contains(e) && out.contains(alone));
-  EXPECT_FALSE(out.contains(a) || out.contains(b) || out.contains(c));
-  EXPECT_EQ(out.size(), 3u);
-
-  seeds.clear();
-  groups.spread(w.moving, seeds, out);
-  EXPECT_TRUE(out.empty());
+  const BodySet chain = w.groupsOf({a});
+  EXPECT_TRUE(chain.contains(a) && chain.contains(b) && chain.contains(c));
+  EXPECT_EQ(chain.size(), 3u);
+  const BodySet two = w.groupsOf({e, alone});
+  EXPECT_TRUE(two.contains(d) && two.contains(e) && two.contains(alone));
+  EXPECT_EQ(two.size(), 3u);
+  EXPECT_TRUE(w.groupsOf({}).empty());
 }
 
 // Two cubes 16 cm apart (their boxes, each grown by the 2 cm contact
@@ -89,20 +82,12 @@ TEST(StepGroups, ABodyBetweenTwoJoinsThem) {
   World w;
   btRigidBody* a = w.add(w.cube, 1, btVector3(0, 0, 0));
   btRigidBody* b = w.add(w.cube, 1, btVector3(0.26, 0, 0));
-  w.pair();
-  StepGroups groups;
-  groups.find(w.moving, *w.broadphase.getOverlappingPairCache());
-  BodySet seeds, out;
-  seeds.insert(a);
-  groups.spread(w.moving, seeds, out);
-  EXPECT_FALSE(out.contains(b));
+  EXPECT_FALSE(w.groupsOf({a}).contains(b));
 
   w.add(w.cube, 1, btVector3(0.13, 0, 0));
-  w.pair();
-  groups.find(w.moving, *w.broadphase.getOverlappingPairCache());
-  groups.spread(w.moving, seeds, out);
-  EXPECT_TRUE(out.contains(b));
-  EXPECT_EQ(out.size(), 3u);
+  const BodySet joined = w.groupsOf({a});
+  EXPECT_TRUE(joined.contains(b));
+  EXPECT_EQ(joined.size(), 3u);
 }
 
 }  // namespace
