@@ -130,6 +130,10 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   // cut at the next event, the islands solved.
   void solveContacts(Part& part, btContactSolverInfo& solverInfo);
   void dropStalePoints();
+  // The earliest event inside the part (an impact, a pair with no point
+  // closing fast, a face exit), the part's length if none; with
+  // `eventful`, the bodies of every event inside it are added.
+  double earliestEvent(const Part& part, const ImpactScan& scan, BodySet* eventful);
   void cutAtNextEvent(Part& part, const ImpactScan& scan);
 
   // Groups apart (GroupSteps.cpp). A step's first part finds its events
@@ -139,9 +143,11 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   // to the step's start and taken again in parts while the rest are set
   // aside.
   enum class Grouping { kNone, kAll, kSome };
-  // Also sets `cut` to the earliest event's time, as cutAtNextEvent finds it.
+  // Also sets `cut` to the earliest event's time (earliestEvent).
   Grouping groupEvents(const Part& part, const ImpactScan& scan, double& cut);
   void saveStepStart();
+  // What carries from part to part, back as it was at the step's start.
+  void putBackCarried(double dt);
   void savePointsStart();
   void stepGroupsApart(double dt);
   // Puts the bodies of `only` (every body if null), or the points of their

@@ -56,10 +56,7 @@ void DynamicsWorld::savePointsStart() {
 DynamicsWorld::Grouping DynamicsWorld::groupEvents(const Part& part, const ImpactScan& scan, double& cut) {
   btDispatcher* dispatcher = getDispatcher();
   eventful_.clear();
-  cut = std::min({scan.earliestImpact(part.length, kBounceSpeed, &eventful_),
-                  scan.earliestSeparatedImpact(*getBroadphase()->getOverlappingPairCache(), part.length,
-                                               kBounceSpeed, &eventful_),
-                  earliestFaceExit(*dispatcher, part.length, pointBoxes_, &eventful_)});
+  cut = earliestEvent(part, scan, &eventful_);
   // Slips that may turn round or stop inside the part (solvePart's).
   if (secondOrder_) {
     const double g = getGravity().length();
@@ -77,6 +74,14 @@ DynamicsWorld::Grouping DynamicsWorld::groupEvents(const Part& part, const Impac
   groups_.spread(m_nonStaticRigidBodies, eventful_, retaken_);
   return retaken_.size() == static_cast<std::size_t>(m_nonStaticRigidBodies.size()) ? Grouping::kAll
                                                                                       : Grouping::kSome;
+}
+
+void DynamicsWorld::putBackCarried(double dt) {
+  settling_[0] = carriedStart_.settling[0];
+  settling_[1] = carriedStart_.settling[1];
+  sliding_ = carriedStart_.sliding;
+  lastSlipEnd_ = slipEndStart_;
+  lastStep_ = dt;
 }
 
 void DynamicsWorld::putBackBodies(const BodySet* only) {
@@ -154,8 +159,7 @@ bool DynamicsWorld::crossesAside() {
     const auto* a = static_cast<const btCollisionObject*>(p0->m_clientObject);
     const auto* b = static_cast<const btCollisionObject*>(p1->m_clientObject);
     if (!(aside_.contains(a) && retaken_.contains(b)) && !(aside_.contains(b) && retaken_.contains(a))) continue;
-    // The boxes the world gave, as StepGroups joins them.
-    if (TestAabbAgainstAabb2(p0->m_aabbMin, p0->m_aabbMax, p1->m_aabbMin, p1->m_aabbMax)) return true;
+    if (StepGroups::joins(*p0, *p1)) return true;
   }
   return false;
 }
@@ -182,11 +186,7 @@ void DynamicsWorld::stepGroupsApart(double dt) {
   struck_.erase(std::remove_if(struck_.begin(), struck_.end(),
                                [&](const Struck& s) { return retaken_.contains(s.a) || retaken_.contains(s.b); }),
                 struck_.end());
-  settling_[0] = carriedStart_.settling[0];
-  settling_[1] = carriedStart_.settling[1];
-  sliding_ = carriedStart_.sliding;
-  lastSlipEnd_ = slipEndStart_;
-  lastStep_ = dt;
+  putBackCarried(dt);
   setAside(aside_);
   takeParts(dt, false);
   bringBack();
@@ -200,12 +200,8 @@ void DynamicsWorld::stepGroupsApart(double dt) {
     pointsBack_ = nullptr;
     putBackAll_ = true;
     struck_.clear();
-    settling_[0] = carriedStart_.settling[0];
-    settling_[1] = carriedStart_.settling[1];
-    sliding_ = carriedStart_.sliding;
-    lastSlipEnd_ = slipEndStart_;
+    putBackCarried(dt);
     endVelocities_ = carriedStart_.endVelocities;
-    lastStep_ = dt;
     takeParts(dt, false);
     return;
   }

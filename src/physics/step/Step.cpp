@@ -232,12 +232,16 @@ void DynamicsWorld::dropStalePoints() {
   }
 }
 
-void DynamicsWorld::cutAtNextEvent(Part& part, const ImpactScan& scan) {
+double DynamicsWorld::earliestEvent(const Part& part, const ImpactScan& scan, BodySet* eventful) {
   btDispatcher* dispatcher = getDispatcher();
-  const double cut = std::min({scan.earliestImpact(part.length, kBounceSpeed),
-                               scan.earliestSeparatedImpact(*getBroadphase()->getOverlappingPairCache(),
-                                                            part.length, kBounceSpeed),
-                               earliestFaceExit(*dispatcher, part.length, pointBoxes_)});
+  return std::min({scan.earliestImpact(part.length, kBounceSpeed, eventful),
+                   scan.earliestSeparatedImpact(*getBroadphase()->getOverlappingPairCache(), part.length,
+                                                kBounceSpeed, eventful),
+                   earliestFaceExit(*dispatcher, part.length, pointBoxes_, eventful)});
+}
+
+void DynamicsWorld::cutAtNextEvent(Part& part, const ImpactScan& scan) {
+  const double cut = earliestEvent(part, scan, nullptr);
   if (cut < part.length) shortenPart(part, cut);
 }
 

@@ -4,6 +4,13 @@
 
 namespace tabletop {
 
+// The boxes the world gave the broadphase, not its own: a dynamic tree
+// pairs bodies whose fattened boxes overlap, and the groups, like the
+// outcome, must not depend on the broadphase.
+bool StepGroups::joins(const btBroadphaseProxy& a, const btBroadphaseProxy& b) {
+  return TestAabbAgainstAabb2(a.m_aabbMin, a.m_aabbMax, b.m_aabbMin, b.m_aabbMax);
+}
+
 int StepGroups::root(int i) {
   while (parent_[static_cast<std::size_t>(i)] != i) {
     int& up = parent_[static_cast<std::size_t>(i)];
@@ -32,10 +39,7 @@ void StepGroups::find(const btAlignedObjectArray<btRigidBody*>& bodies, btOverla
     const btBroadphaseProxy* p1 = array[p].m_pProxy1;
     const int a = moving(p0), b = moving(p1);
     if (a < 0 || b < 0) continue;
-    // The boxes the world gave the broadphase, not its own: a dynamic tree
-    // pairs bodies whose fattened boxes overlap, and the groups, like the
-    // outcome, must not depend on the broadphase.
-    if (!TestAabbAgainstAabb2(p0->m_aabbMin, p0->m_aabbMax, p1->m_aabbMin, p1->m_aabbMax)) continue;
+    if (!joins(*p0, *p1)) continue;
     const int ra = root(a), rb = root(b);
     if (ra != rb) parent_[static_cast<std::size_t>(std::max(ra, rb))] = std::min(ra, rb);
   }

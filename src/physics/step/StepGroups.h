@@ -24,6 +24,10 @@ class StepGroups {
   /// `out` (cleared first): at most all of `bodies` as given to find().
   void spread(const btAlignedObjectArray<btRigidBody*>& bodies, const BodySet& seeds, BodySet& out);
 
+ /// Whether a pair of the broadphase joins its two bodies in one group
+  /// (also whether a body taken again comes to touch one set aside).
+  static bool joins(const btBroadphaseProxy& a, const btBroadphaseProxy& b);
+
  private:
   int root(int i);
   std::vector<int> parent_;        // by world array index; -1: not a moving body
