@@ -6,6 +6,8 @@ include(TabletopBullet)
 
 find_package(nlohmann_json 3.10 CONFIG REQUIRED)
 find_package(CLI11 CONFIG REQUIRED)
+# Threads: the step solves independent islands on every core.
+find_package(Threads REQUIRED)
 # utf8proc, as Tabletop::utf8proc (its own file, like Bullet's).
 include(TabletopUtf8proc)
 

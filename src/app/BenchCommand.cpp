@@ -73,8 +73,8 @@ void addBenchOptions(CLI::App& command, BenchOptions& options) {
   command.add_option("--repeats", options.repeats, "Timed runs per setting, after a warm-up (default 5)")
       ->check(CLI::Range(1, 1000));
   command.add_option("--jobs", options.jobs,
-                     "Worker processes timing the sweep's settings at once, each setting on one core "
-                     "(default: every core)")
+                     "Worker processes timing the sweep's settings at once, each setting on one core, and running "
+                     "the laws' scenes (default: every core)")
       ->check(CLI::Range(1, kMaxJobs));
   command.add_option("--rates", options.rates, "Step rates to sweep, Hz (default 30,60,...,4000)")
       ->delimiter(',')
@@ -101,6 +101,9 @@ void addBenchOptions(CLI::App& command, BenchOptions& options) {
                      "Wall seconds a pile's tabletop run may take before it stops and larger piles are left out "
                      "(default 120)")
       ->check(finiteRange(0.001, 86400.0));
+  addThreadsOption(command, options.threads)
+      ->description("Threads the piles are run on a second time, against one (default: TABLETOP_THREADS, else "
+                    "every core); any count gives the same states to the bit");
   command.add_flag("--hard", options.hard,
                    "Run each hard case (SCENARIOS/hard) once at its own settings: cost, drift, penetration, "
                    "speed at rest, energy gain");
@@ -157,7 +160,7 @@ int runBench(const BenchOptions& asked, std::ostream& out, std::ostream& err) {
   if (sweepAsked) {
     Progress progress(err);
     points = measureSweep(scenes, grid, options.modes, options.repeats, hooks(interrupt, progress), skipped,
-                          options.jobs > 0 ? options.jobs : availableCores());
+                          options.jobs > 0 ? options.jobs : availableThreads());
   }
   markParetoFronts(points);
   std::vector<SwitchPoint> switchPoints;
@@ -173,7 +176,8 @@ int runBench(const BenchOptions& asked, std::ostream& out, std::ostream& err) {
   std::vector<PilePoint> pilePoints;
   if (!options.piles.empty() && !interrupt.requested()) {
     Progress progress(err);
-    pilePoints = measurePiles(options.piles, options.pileBudget, hooks(interrupt, progress));
+    pilePoints = measurePiles(options.piles, options.pileBudget, options.threads.value_or(availableThreads()),
+                              hooks(interrupt, progress));
   }
   std::vector<HardPoint> hardPoints;
   if (options.hard && !interrupt.requested()) {
@@ -194,7 +198,7 @@ int runBench(const BenchOptions& asked, std::ostream& out, std::ostream& err) {
   std::vector<LawPoint> lawPoints;
   if (options.laws && !interrupt.requested()) {
     Progress progress(err);
-    lawPoints = measureLaws(options.rates, hooks(interrupt, progress));
+    lawPoints = measureLaws(options.rates, hooks(interrupt, progress), options.jobs > 0 ? options.jobs : availableThreads());
   }
 
   if (options.json) {

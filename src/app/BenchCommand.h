@@ -38,6 +38,7 @@ struct BenchOptions {
   std::vector<int> scale;
   std::vector<int> piles;    ///< bodies per pile (--piles)
   double pileBudget = 120;   ///< s of wall time per pile's tabletop run
+  std::optional<int> threads;  ///< --threads (else TABLETOP_THREADS, else every core): the piles' second run
   bool hard = false;  ///< --hard: run every scene in SCENARIOS/hard once and measure its stability
   bool laws = false;  ///< --laws: the sliding, rolling, step, spinning and bouncing laws over shapes and supports
   bool baseline = false;  ///< --baseline: each scene's cost against Bullet's own default pipeline

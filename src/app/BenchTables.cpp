@@ -139,6 +139,10 @@ ResultTable pileTable(const std::vector<PilePoint>& points) {
                {"tabletop_ms_per_s", "tabletop [ms/s]"},
                {"bullet_ms_per_s", "Bullet [ms/s]"},
                {"ratio", "ratio"},
+               {"threads", "threads"},
+               {"threaded_ms_per_s", "on threads [ms/s]"},
+               {"threaded_ratio", "ratio"},
+               {"threaded_same_state", "same"},
                {"tabletop_drift_m", "drift [mm]"},
                {"bullet_drift_m", "Bullet drift [mm]"},
                {"tabletop_penetration_m", "deepest [mm]"},
@@ -154,9 +158,15 @@ ResultTable pileTable(const std::vector<PilePoint>& points) {
     return s.settled.measured ? cell(value, fixed(scale * value, digits)) : cell(nullptr, "-");
   };
   for (const PilePoint& p : points) {
-    const PileSide &a = p.tabletop, &b = p.bullet;
+    const PileSide &a = p.tabletop, &b = p.bullet, &c = p.threaded;
+    const bool threaded = p.threads > 1;
     t.rows.push_back({cell(p.bodies, std::to_string(p.bodies)), cell(a.costMsPerSecond, 1),
                       cell(b.costMsPerSecond, 1), cell(a.costMsPerSecond / b.costMsPerSecond, 2),
+                      cell(p.threads, std::to_string(p.threads)),
+                      threaded ? cell(c.costMsPerSecond, 1) : cell(nullptr, "-"),
+                      threaded ? cell(c.costMsPerSecond / b.costMsPerSecond, 2) : cell(nullptr, "-"),
+                      threaded ? flag(c.hash == a.hash && c.simulated == a.simulated, c.hash == a.hash ? "yes" : "NO")
+                               : cell(nullptr, "-"),
                       settled(a, a.settled.drift, 1e3, 3), settled(b, b.settled.drift, 1e3, 3),
                       settled(a, a.settled.penetration, 1e3, 3), settled(b, b.settled.penetration, 1e3, 3),
                       settled(a, a.settled.energyGain, 1.0, 4), settled(b, b.settled.energyGain, 1.0, 4),

@@ -2,6 +2,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <optional>
 #include <type_traits>
 #include <sstream>
 #include <string>
@@ -9,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "core/Text.h"
+#include "core/WorkerThreads.h"
 #include "draw/CameraChoice.h"
 
 namespace tabletop {
@@ -33,6 +35,25 @@ inline CLI::Validator finiteRange(double lo, double hi) {
         return "";
       },
       "NUMBER from " + range.str());
+}
+
+/// --threads N, read from TABLETOP_THREADS when not given (neither: left
+/// unset, and the command uses every core): a whole number from 1 to
+/// kMaxThreads.
+inline CLI::Option* addThreadsOption(CLI::App& command, std::optional<int>& threads) {
+  const std::string bounds = "from 1 to " + std::to_string(kMaxThreads);
+  CLI::Validator whole(
+      [bounds](std::string& text) -> std::string {
+        if (threadCount(text)) return "";
+        return "expected a whole number " + bounds + " (--threads or TABLETOP_THREADS), got '" + shownText(text) + "'";
+      },
+      "N " + bounds);
+  return command
+      .add_option("--threads", threads,
+                  "Threads a step solves independent islands on (default: TABLETOP_THREADS, else every core); "
+                  "any count gives the same result to the bit")
+      ->envname("TABLETOP_THREADS")
+      ->check(whole);
 }
 
 /// --camera's value, as CameraChoice reads it (shown as CAMERA in help).

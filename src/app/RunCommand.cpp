@@ -67,6 +67,7 @@ void addRunOptions(CLI::App& command, RunOptions& options, bool withMode) {
                      "The front --tolerance reads (default: the shipped data/tolerance_front.json; made by tabletop bench --write-front)");
   command.add_option("--duration", options.duration, "Longest simulated time in seconds (overrides the scenario)")
       ->check(finiteRange(1e-9, 3600.0));
+  addThreadsOption(command, options.threads);
 }
 
 Scenario loadScenario(const ScenarioSource& source, const RunOptions& options,
@@ -94,6 +95,7 @@ Scenario loadScenario(const ScenarioSource& source, const RunOptions& options,
   if (options.iterations) settings.iterations = *options.iterations;
   if (options.integrator) settings.integrator = *options.integrator;
   if (options.duration) settings.duration = *options.duration;
+  settings.threads = options.threads.value_or(availableThreads());
   const std::string tooLong = ScenarioLoader::runSizeProblem(settings, scenario.entities.size());
   if (!tooLong.empty()) throw ScenarioError(scenario, {{"/settings", tooLong + " with the command line's settings"}});
   return scenario;

@@ -40,6 +40,7 @@ struct RunOptions {
   std::optional<int> iterations;
   std::optional<Integrator> integrator;
   std::optional<double> duration;
+  std::optional<int> threads;  ///< --threads, else TABLETOP_THREADS; unset: every core
   std::optional<std::string> outFile;  ///< write the output here, whole or not at all
   std::optional<std::string> traceFile;  ///< write every step's motions here (CSV), for one scenario
   double traceMaxMegabytes = 1024.0;     ///< the largest trace written, MB
@@ -56,7 +57,8 @@ void addRunOptions(CLI::App& command, RunOptions& options, bool withMode = true)
 /// scenario.settings, which every mode then reads: the file's, then
 /// --tolerance's choice (what it chose and why, a line each, goes to
 /// `choiceLines` if given), then --timestep, --iterations, --integrator and
-/// --duration. Throws ScenarioError, also for a bad front file.
+/// --duration; and the threads to use (--threads, TABLETOP_THREADS, else
+/// every core). Throws ScenarioError, also for a bad front file.
 Scenario loadScenario(const ScenarioSource& source, const RunOptions& options,
                       std::vector<std::string>* choiceLines = nullptr);
 

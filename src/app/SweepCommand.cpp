@@ -148,7 +148,7 @@ int runSweep(const SweepOptions& options, std::ostream& out, std::ostream& err) 
     if (options.scheduler) {
       runSweepBridge(spec, first, total - first, daskBridgeCommand(*options.scheduler), onRow, stop);
     } else {
-      runSweepPool(spec, first, total - first, options.jobs > 0 ? options.jobs : availableCores(), onRow, stop);
+      runSweepPool(spec, first, total - first, options.jobs > 0 ? options.jobs : availableThreads(), onRow, stop);
     }
   } catch (const std::exception& e) {
     err << "tabletop sweep: " << e.what() << "\n";

@@ -60,6 +60,11 @@ struct Settings {
   bool endAtRest = true;          ///< stop once the script is done and all is at rest
   Integrator integrator = Integrator::Trapezoid;  ///< how positions follow velocities
   BulletSettings bullet;          ///< full physics only
+  /// Threads full physics solves independent islands on (1: the calling
+  /// thread alone). Not a scene's: the command line's --threads or
+  /// TABLETOP_THREADS, or Python's `threads`, sets it; any count gives the
+  /// same states to the bit (docs/step.md, "Threads").
+  int threads = 1;
 };
 
 }  // namespace tabletop

@@ -196,11 +196,6 @@ void drive(Workers& workers, std::size_t depth, std::size_t first, std::size_t c
 
 }  // namespace
 
-int availableCores() {
-  const long n = ::sysconf(_SC_NPROCESSORS_ONLN);
-  return static_cast<int>(std::clamp<long>(n, 1, kMaxJobs));
-}
-
 void runProcessPool(std::size_t first, std::size_t count, int jobs, const PoolJob& job,
                     const std::function<void(const PoolRow&)>& onRow, const std::function<bool()>& stop) {
   if (count == 0) return;

@@ -7,16 +7,16 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/WorkerThreads.h"
+
 namespace tabletop {
 
-/// The most worker processes a pool starts.
-inline constexpr int kMaxJobs = 256;
+/// The most worker processes a pool starts (as many as threads:
+/// availableThreads() says how many cores there are).
+inline constexpr int kMaxJobs = kMaxThreads;
 
 /// The most jobs a bridge (runBridgePool) holds at once.
 inline constexpr std::size_t kMaxBridgeRuns = 4096;
-
-/// The cores this machine offers (at least 1, at most kMaxJobs).
-int availableCores();
 
 /// One job's result: a row of JSON values whose first is the job's index.
 using PoolRow = std::vector<nlohmann::json>;

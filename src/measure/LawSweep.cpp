@@ -9,6 +9,7 @@
 
 #include "core/ShapeGeometry.h"
 #include "core/Simulation.h"
+#include "io/ProcessPool.h"
 #include "physics/StepPush.h"
 #include "sim/SceneBuilder.h"
 #include "sim/ScriptRunner.h"
@@ -136,30 +137,57 @@ LawPoint measureBounce(const ShapeSize& shape, const char* support, double rate)
 
 }  // namespace
 
-std::vector<LawPoint> measureLaws(const std::vector<double>& rates, const MeasureHooks& hooks) {
-  std::vector<std::tuple<std::string, const ShapeSize*>> jobs;
-  for (const ShapeSize& s : kSolids) jobs.emplace_back("slide", &s);
-  jobs.emplace_back("slide", &kSlidingAlong);
-  for (const ShapeSize& s : kSpheres) jobs.emplace_back("roll", &s);
-  jobs.emplace_back("roll", &kRolling);
-  for (const ShapeSize& s : kSolids) jobs.emplace_back("step", &s);
-  for (const ShapeSize& s : kSpheres) jobs.emplace_back("step", &s);
-  for (const ShapeSize& s : kSolids) jobs.emplace_back("spin", &s);
-  jobs.emplace_back("bounce", &kSpheres[0]);
-  for (const ShapeSize& s : kSolids) jobs.emplace_back("bounce", &s);
-  hooks.start(static_cast<long>(jobs.size() * std::size(kLawSupports) * rates.size()));
-  std::vector<LawPoint> points;
-  for (const auto& [law, shape] : jobs) {
+std::vector<LawPoint> measureLaws(const std::vector<double>& rates, const MeasureHooks& hooks, int jobs) {
+  std::vector<std::tuple<std::string, const ShapeSize*>> laws;
+  for (const ShapeSize& s : kSolids) laws.emplace_back("slide", &s);
+  laws.emplace_back("slide", &kSlidingAlong);
+  for (const ShapeSize& s : kSpheres) laws.emplace_back("roll", &s);
+  laws.emplace_back("roll", &kRolling);
+  for (const ShapeSize& s : kSolids) laws.emplace_back("step", &s);
+  for (const ShapeSize& s : kSpheres) laws.emplace_back("step", &s);
+  for (const ShapeSize& s : kSolids) laws.emplace_back("spin", &s);
+  laws.emplace_back("bounce", &kSpheres[0]);
+  for (const ShapeSize& s : kSolids) laws.emplace_back("bounce", &s);
+  // One run per law, shape, support and rate, in that order.
+  struct Run {
+    const std::string* law;
+    const ShapeSize* shape;
+    const char* support;
+    double rate;
+  };
+  std::vector<Run> runs;
+  for (const auto& [law, shape] : laws) {
     for (const char* support : kLawSupports) {
-      for (const double rate : rates) {
-        if (hooks.stop()) return points;
-        points.push_back(law == "bounce" ? measureBounce(*shape, support, rate)
-                         : law == "spin" ? measureSpin(*shape, support, rate)
-                                         : measure(law, *shape, support, rate));
-        hooks.advance(law + " " + shape->shape);
-      }
+      for (const double rate : rates) runs.push_back({&law, shape, support, rate});
     }
   }
+  hooks.start(static_cast<long>(runs.size()));
+  const auto measureRun = [&runs](std::size_t i) {
+    const Run& r = runs[i];
+    return *r.law == "bounce" ? measureBounce(*r.shape, r.support, r.rate)
+           : *r.law == "spin" ? measureSpin(*r.shape, r.support, r.rate)
+                              : measure(*r.law, *r.shape, r.support, r.rate);
+  };
+  std::vector<LawPoint> points;
+  const auto take = [&](const Run& r, LawPoint p) {
+    hooks.advance(*r.law + " " + r.shape->shape);
+    points.push_back(std::move(p));
+  };
+  if (std::min<std::size_t>(static_cast<std::size_t>(std::max(jobs, 1)), runs.size()) <= 1) {
+    for (std::size_t i = 0; i < runs.size() && !hooks.stop(); ++i) take(runs[i], measureRun(i));
+    return points;
+  }
+  // A run that did not complete has an infinite error, which JSON cannot
+  // hold: it travels as null.
+  const auto number = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
+  const auto back = [](const nlohmann::json& v) { return v.is_null() ? INFINITY : v.get<double>(); };
+  runProcessPool(0, runs.size(), jobs, [&](std::size_t i) {
+    const LawPoint p = measureRun(i);
+    return PoolRow{i, p.shape, number(p.worstError), number(p.worstTurn)};
+  }, [&](const PoolRow& row) {
+    const Run& r = runs[row[0].get<std::size_t>()];
+    take(r, {*r.law, row[1].get<std::string>(), r.support, r.rate, back(row[2]), back(row[3])});
+  }, hooks.stop);
   return points;
 }
 

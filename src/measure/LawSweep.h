@@ -33,7 +33,10 @@ struct LawPoint {
   double worstTurn = 0;    ///< degrees, likewise (not for spheres)
 };
 
-std::vector<LawPoint> measureLaws(const std::vector<double>& rates, const MeasureHooks& hooks);
+/// Every law at every rate; with `jobs` > 1 the runs go to that many
+/// worker processes (io/ProcessPool.h), the points coming back in the
+/// same order with the same values.
+std::vector<LawPoint> measureLaws(const std::vector<double>& rates, const MeasureHooks& hooks, int jobs = 1);
 
 /// One row per law, shape and support, the worst error at each rate.
 ResultTable lawTable(const std::vector<LawPoint>& points);

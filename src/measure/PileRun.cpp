@@ -5,6 +5,7 @@
 #include <memory>
 #include <sstream>
 
+#include "core/StateHash.h"
 #include "measure/PlainBullet.h"
 #include "physics/World.h"
 #include "scenes/Pile.h"
@@ -48,20 +49,27 @@ PileSide runTabletop(const Scenario& pile, double budgetSeconds) {
   side.largestIsland = world->solverUse().largestIsland;
   side.costMsPerSecond = side.simulated > 0 ? 1e3 * wall / side.simulated : 0.0;
   side.settled = watch.result();
+  side.hash = stateHash(world->snapshot());
   return side;
 }
 
 }  // namespace
 
-std::vector<PilePoint> measurePiles(const std::vector<int>& sizes, double budgetSeconds, const MeasureHooks& hooks) {
+std::vector<PilePoint> measurePiles(const std::vector<int>& sizes, double budgetSeconds, int threads,
+                                    const MeasureHooks& hooks) {
   std::vector<PilePoint> points;
   hooks.start(static_cast<long>(sizes.size()));
   for (int n : sizes) {
     if (hooks.stop()) break;
-    const Scenario pile = Pile::make(n);
+    Scenario pile = Pile::make(n);
     PilePoint p;
     p.bodies = n;
     p.tabletop = runTabletop(pile, budgetSeconds);
+    if (threads > 1 && p.tabletop.note.empty()) {
+      pile.settings.threads = threads;
+      p.threads = threads;
+      p.threaded = runTabletop(pile, budgetSeconds);
+    }
     const PlainRun bullet = runPlainBullet(pile, pile.settings.timestep, pile.settings.duration, 1, Pile::kSettle);
     p.bullet.costMsPerSecond = bullet.costMsPerSecond;
     p.bullet.simulated = bullet.simulated;

@@ -68,6 +68,7 @@ Pipeline::Pipeline(const Settings& settings, const TableSpec& table)
   // body asleep (with `sleeping` on) is still until something wakes it.
   world->setForceUpdateAllAabbs(false);
   world->setSecondOrderPositions(settings.integrator == Integrator::Trapezoid);
+  world->setThreads(settings.threads);
   btContactSolverInfo& info = world->getSolverInfo();
   info.m_numIterations = settings.iterations;
   // One island at a time, so each is solved its own way and the row limit

@@ -36,8 +36,9 @@ inline Vec3 toVec3(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
 /// beginning between entities, an entity leaving the table, landing on a
 /// new support, coming to rest.
 ///
-/// Deterministic: one thread, no interpolation, no randomised solver order,
-/// sorted overlapping pairs; the same scene and settings give bit-identical
+/// Deterministic: no interpolation, no randomised solver order, sorted
+/// overlapping pairs, islands that give the same answer on any thread
+/// (Settings::threads); the same scene and settings give bit-identical
 /// states.
 class World : public Simulation {
  public:

@@ -2,11 +2,14 @@
 
 #include <dlfcn.h>
 
+#include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "core/Integrator.h"
 #include "core/Text.h"
+#include "core/WorkerThreads.h"
 #include "scenario/ScenarioError.h"
 #include "scenario/ScenarioLoader.h"
 #include "scenario/ShippedScenes.h"
@@ -95,6 +98,18 @@ Scenario resolved(Scenario scenario, const Overrides& o) {
     s.integrator = *integrator;
   }
   if (o.duration) s.duration = checkedNumber("duration", *o.duration, ranges::kSpan);
+  if (!o.threads.is_none()) {
+    s.threads = static_cast<int>(checkedInteger("threads", o.threads, 1, kMaxThreads));
+  } else if (const char* environment = std::getenv("TABLETOP_THREADS")) {
+    const std::optional<int> n = threadCount(environment);
+    if (!n) {
+      throw py::value_error("threads: TABLETOP_THREADS: expected a whole number from 1 to " +
+                            std::to_string(kMaxThreads) + ", got '" + shownText(environment, 40) + "'");
+    }
+    s.threads = *n;
+  } else {
+    s.threads = availableThreads();
+  }
   if (const std::string problem = ScenarioLoader::runSizeProblem(s, scenario.entities.size()); !problem.empty()) {
     throw ScenarioError(scenario, {{"/settings", problem + " with the settings given from Python"}});
   }

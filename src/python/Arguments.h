@@ -47,6 +47,9 @@ struct Overrides {
   py::object iterations = py::none();
   std::optional<std::string> integrator;
   std::optional<double> duration;
+  /// Threads the step solves islands on: None reads TABLETOP_THREADS, and
+  /// without it takes every core (as the command line).
+  py::object threads = py::none();
 };
 
 /// `scenario` with `overrides` applied: each checked against its setting's

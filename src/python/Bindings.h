@@ -29,9 +29,10 @@ enum class Motion { Position, Orientation, Velocity, Spin };
 pybind11::array_t<double> motionRows(const std::vector<BodyMotion>& motions, Motion part);
 
 /// Simulation.__init__: builds `scene` into `self`, made by __new__ (a
-/// RuntimeError when it already holds one).
+/// RuntimeError when it already holds one); `threads` as resolved() reads it.
 void initialise(const pybind11::handle& self, const pybind11::object& scene, const std::string& mode, bool script,
-                std::optional<double> timestep, const pybind11::object& iterations, std::optional<std::string> integrator);
+                std::optional<double> timestep, const pybind11::object& iterations, std::optional<std::string> integrator,
+                const pybind11::object& threads);
 
 /// Simulation's readings: state arrays, contacts, repr (SimulationReadings.cpp).
 void bindSimulationReadings(pybind11::class_<SimulationObject>& simulation);

@@ -30,8 +30,9 @@ std::string joinedLines(const ScenarioError& e) {
 // run(): the whole run with the GIL released, Ctrl-C looked for between
 // steps; bounded by the duration, which resolved() bounded.
 py::object run(const py::object& scene, const std::string& mode, std::optional<double> timestep,
-               const py::object& iterations, std::optional<std::string> integrator, std::optional<double> duration) {
-  const Scenario scenario = resolved(scenarioOf(scene), {timestep, iterations, integrator, duration});
+               const py::object& iterations, std::optional<std::string> integrator, std::optional<double> duration,
+               const py::object& threads) {
+  const Scenario scenario = resolved(scenarioOf(scene), {timestep, iterations, integrator, duration, threads});
   const SimulationMode chosen = modeNamed(mode);
   RunResult result;
   {
@@ -102,10 +103,12 @@ void bindScenarios(py::module_& m) {
       "checked as a file is; problems are located in that object written as JSON.");
   m.def("run", &run, py::arg("scene"), py::kw_only(), py::arg("mode") = "bullet", py::arg("timestep") = py::none(),
         py::arg("iterations") = py::none(), py::arg("integrator") = py::none(), py::arg("duration") = py::none(),
+        py::arg("threads") = py::none(),
         "Runs a scenario (a Scenario, a file's path or a shipped scene's name, or a scene's objects) to its end and returns its run as "
         "`tabletop run --json` prints it (one entry of the document's runs): entities, events, state_hash, "
         "complete. A run that diverges returns complete False with its failure. The keyword settings override the "
-        "scenario's, as run's options do, within the same limits. The GIL is released while it runs; Ctrl-C stops "
+        "scenario's, as run's options do, within the same limits; threads (1 to 256; None: TABLETOP_THREADS, else "
+        "every core) share out the independent islands and give the same run to the bit. The GIL is released while it runs; Ctrl-C stops "
         "it.");
 }
 

@@ -28,12 +28,13 @@ namespace {
 }  // namespace
 
 void initialise(const py::handle& self, const py::object& scene, const std::string& mode, bool script,
-                std::optional<double> timestep, const py::object& iterations, std::optional<std::string> integrator) {
+                std::optional<double> timestep, const py::object& iterations, std::optional<std::string> integrator,
+                const py::object& threads) {
   py::detail::value_and_holder holder = valueAndHolder(self);
   if (holder.holder_constructed()) {
     throw std::runtime_error("Simulation: already initialised; make a new Simulation for another scene");
   }
-  Scenario scenario = resolved(scenarioOf(scene), {timestep, iterations, integrator, std::nullopt});
+  Scenario scenario = resolved(scenarioOf(scene), {timestep, iterations, integrator, std::nullopt, threads});
   const SimulationMode chosen = modeNamed(mode);
   std::unique_ptr<SteppedScene> built;
   {
@@ -182,11 +183,13 @@ void bindSimulation(py::module_& m) {
   simulation.attr("__init__") = py::cpp_function(
       &initialise, py::is_method(simulation), py::arg("scene"), py::kw_only(),
       py::arg("mode") = "bullet", py::arg("script") = true, py::arg("timestep") = py::none(),
-      py::arg("iterations") = py::none(), py::arg("integrator") = py::none(),
+      py::arg("iterations") = py::none(), py::arg("integrator") = py::none(), py::arg("threads") = py::none(),
       "Builds the scene (a Scenario, a file's path or a shipped scene's name, or a scene's objects) in mode "
       "'bullet', 'compat' or 'rules'. With script True its script is carried out as time "
       "passes; with False only the pushes given from Python happen. timestep, iterations and integrator override "
-      "the scenario's, within its limits. A second __init__ on a live Simulation raises RuntimeError.");
+      "the scenario's, within its limits; threads (1 to 256; None: TABLETOP_THREADS, else every core) share out the "
+      "independent islands and give the same states to the bit, and a copy or a pickle takes the default again. "
+      "A second __init__ on a live Simulation raises RuntimeError.");
   simulation
       .def("step", &step, py::arg("n") = 1,
            "Advances n fixed timesteps (carrying out the script's actions as they fall due): n from 0 to 1e7, and "

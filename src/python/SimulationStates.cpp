@@ -64,7 +64,8 @@ void restoreInto(const py::handle& self, const py::tuple& origin, const SceneHis
   }
   Scenario scenario = ScenarioLoader::loadText(origin[0].cast<std::string>(), origin[1].cast<std::string>());
   initialise(self, py::cast(std::move(scenario)), origin[2].cast<std::string>(), origin[3].cast<bool>(),
-             origin[4].cast<std::optional<double>>(), origin[5], origin[6].cast<std::optional<std::string>>());
+             origin[4].cast<std::optional<double>>(), origin[5], origin[6].cast<std::optional<std::string>>(),
+             py::none());
   with(self, [&](SteppedScene& scene) { replay(scene, history, hash, "Simulation"); });
 }
 

@@ -34,5 +34,16 @@ TEST(BenchLaws, TheAccuracyPageShowsWhatTheProgramMeasures) {
   EXPECT_EQ(pageTable(), o.out) << "docs/accuracy.md is stale: run docs/make-accuracy.sh";
 }
 
+// The runs shared among worker processes come back in order, each as it
+// was measured in one process.
+TEST(BenchLaws, WorkerProcessesGiveWhatOneProcessGives) {
+  const Outcome one = run(kBin + "tabletop bench --laws --rates 30,60 --json --jobs 1");
+  const Outcome three = run(kBin + "tabletop bench --laws --rates 30,60 --json --jobs 3");
+  ASSERT_EQ(one.status, 0) << one.err;
+  ASSERT_EQ(three.status, 0) << three.err;
+  EXPECT_NE(one.out.find("\"law\": \"bounce\""), std::string::npos) << one.out;
+  EXPECT_EQ(three.out, one.out);
+}
+
 }  // namespace
 }  // namespace tabletop

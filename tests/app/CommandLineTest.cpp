@@ -5,6 +5,7 @@
 
 #include <csignal>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -100,6 +101,26 @@ TEST(CommandLine, HashIsRepeatableAcrossProcesses) {
   const auto a = onlyRun(run(cmd).out);
   const auto b = onlyRun(run(cmd).out);
   EXPECT_EQ(a["state_hash"], b["state_hash"]);
+}
+
+// --threads and TABLETOP_THREADS share out the islands and change no bit;
+// a count that is not a whole number from 1 to 256 is refused in one line
+// naming both.
+TEST(CommandLine, ThreadsChangeNoBitAndBadCountsAreRefused) {
+  const std::string cmd = kBin + "tabletop run " + kScenarios + "example3_stacked_cubes.json --json";
+  const auto one = onlyRun(run(cmd + " --threads 1").out);
+  EXPECT_EQ(onlyRun(run(cmd + " --threads 4").out)["state_hash"], one["state_hash"]);
+  EXPECT_EQ(onlyRun(run("env TABLETOP_THREADS=3 " + cmd).out)["state_hash"], one["state_hash"]);
+  for (const std::string bad : {"--threads 0", "--threads 257", "--threads 2.5", "--threads x"}) {
+    const Outcome o = run(cmd + " " + bad);
+    EXPECT_EQ(o.status, 2) << bad;
+    EXPECT_NE(o.err.find("expected a whole number from 1 to 256 (--threads or TABLETOP_THREADS)"), std::string::npos)
+        << o.err;
+    EXPECT_EQ(std::count(o.err.begin(), o.err.end(), '\n'), 1) << o.err;
+  }
+  const Outcome o = run("env TABLETOP_THREADS=many " + cmd);
+  EXPECT_EQ(o.status, 2);
+  EXPECT_NE(o.err.find("got 'many'"), std::string::npos) << o.err;
 }
 
 // Each report example is its own executable with the same options.
@@ -425,6 +446,19 @@ TEST(CommandLine, BenchDropsPilesAgainstBullet) {
   EXPECT_TRUE(j["piles"][1]["bullet_drift_m"].is_number());
   EXPECT_TRUE(j["pile_exponents"].contains("tabletop"));
   EXPECT_TRUE(j["pile_exponents"].contains("bullet"));
+  // Run again on 3 threads, the pile ends in the same state to the bit;
+  // on one, there is no second run.
+  o = run(kBin + "tabletop bench --piles 12 --threads 3 --json");
+  ASSERT_EQ(o.status, 0) << o.err;
+  const auto threaded = nlohmann::json::parse(o.out)["piles"][0];
+  EXPECT_EQ(threaded["threads"], 3);
+  EXPECT_TRUE(threaded["threaded_ms_per_s"].is_number());
+  EXPECT_EQ(threaded["threaded_same_state"], true);
+  o = run("env TABLETOP_THREADS=1 " + kBin + "tabletop bench --piles 4 --json");
+  ASSERT_EQ(o.status, 0) << o.err;
+  const auto single = nlohmann::json::parse(o.out)["piles"][0];
+  EXPECT_EQ(single["threads"], 1);
+  EXPECT_TRUE(single["threaded_ms_per_s"].is_null());
   o = run(kBin + "tabletop bench --piles 4,8");
   ASSERT_EQ(o.status, 0) << o.err;
   for (const char* column : {"bodies", "tabletop [ms/s]", "Bullet [ms/s]", "ratio", "drift [mm]", "Bullet drift [mm]",

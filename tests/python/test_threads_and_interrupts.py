@@ -201,3 +201,48 @@ def test_threads_on_separate_objects_give_the_sequential_results():
     for t in threads:
         t.join()
     assert together == alone
+
+
+# Two layers of cubes and balls dropped onto the table, the upper one
+# between the lower one's bodies, so that they land on one another in many
+# islands.
+HEAP = {"version": 1, "name": "heap",
+        "settings": {"timestep": 1 / 60, "duration": 1.0, "end_at_rest": False},
+        "entities": [{"name": f"E{i}", "shape": ["cube", "sphere"][i % 2], "size": 0.05, "mass": 0.2,
+                      "position": [-0.45 + 0.1 * (i % 10) + 0.04 * (i // 30), 0.85 + 0.1 * (i // 30),
+                                   -0.1 + 0.1 * ((i // 10) % 3) + 0.03 * (i // 30)]}
+                     for i in range(60)]}
+
+
+def test_threads_share_out_the_islands_and_change_no_bit():
+    """Like --threads: any count gives the run one thread gives, to the bit; so does the default."""
+    one = tabletop.run(HEAP, threads=1)
+    for threads in (2, 3, None):
+        assert tabletop.run(HEAP, threads=threads)["state_hash"] == one["state_hash"], threads
+    with tabletop.Simulation(HEAP, threads=2) as sim:
+        sim.run_to_end()
+        two = sim.result()["state_hash"]
+    assert two == one["state_hash"]
+
+
+@pytest.mark.parametrize("threads", [0, 257, -1])
+def test_a_thread_count_out_of_range_is_refused(threads):
+    with pytest.raises(ValueError, match="threads"):
+        tabletop.run(HEAP, threads=threads)
+    with pytest.raises(ValueError, match="threads"):
+        tabletop.Simulation(HEAP, threads=threads)
+
+
+@pytest.mark.parametrize("value", ["0", "two", "2 ", "1e3", ""])
+def test_a_bad_tabletop_threads_is_refused_by_name(value):
+    code = f"""
+import tabletop
+try:
+    tabletop.run({HEAP!r})
+except ValueError as e:
+    print(e)
+"""
+    import os
+    child = run_python(code, env={**os.environ, "TABLETOP_THREADS": value})
+    assert child.returncode == 0, child.stderr
+    assert "TABLETOP_THREADS: expected a whole number from 1 to 256" in child.stdout

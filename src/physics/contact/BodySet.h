@@ -21,15 +21,17 @@ class BodySet {
       if (std::find(outside_.begin(), outside_.end(), body) == outside_.end()) outside_.push_back(body);
       return;
     }
-    if (static_cast<std::size_t>(index) >= marked_.size()) marked_.resize(static_cast<std::size_t>(index) + 1, 0);
-    if (marked_[static_cast<std::size_t>(index)] != 0) return;
-    marked_[static_cast<std::size_t>(index)] = 1;
-    members_.push_back(index);
+    mark(index);
   }
   bool contains(const btCollisionObject* body) const {
     const int index = body->getWorldArrayIndex();
     if (index < 0) return std::find(outside_.begin(), outside_.end(), body) != outside_.end();
     return static_cast<std::size_t>(index) < marked_.size() && marked_[static_cast<std::size_t>(index)] != 0;
+  }
+  /// Adds every body of `other`.
+  void insertAll(const BodySet& other) {
+    for (const int index : other.members_) mark(index);
+    for (const btCollisionObject* body : other.outside_) insert(body);
   }
   bool empty() const { return members_.empty() && outside_.empty(); }
   std::size_t size() const { return members_.size() + outside_.size(); }
@@ -40,6 +42,12 @@ class BodySet {
   }
 
  private:
+  void mark(int index) {
+    if (static_cast<std::size_t>(index) >= marked_.size()) marked_.resize(static_cast<std::size_t>(index) + 1, 0);
+    if (marked_[static_cast<std::size_t>(index)] != 0) return;
+    marked_[static_cast<std::size_t>(index)] = 1;
+    members_.push_back(index);
+  }
   std::vector<unsigned char> marked_;  // by world array index
   std::vector<int> members_;           // the indices marked
   std::vector<const btCollisionObject*> outside_;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 #include <vector>
 
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
@@ -55,8 +56,48 @@ double rollRate(const btPersistentManifold& manifold, const btManifoldPoint& poi
 
 }  // namespace
 
+bool IslandSolverParts::LockedDantzig::solveMLCP(const btMatrixXu& A, const btVectorXu& b, btVectorXu& x,
+                                                 const btVectorXu& lo, const btVectorXu& hi,
+                                                 const btAlignedObjectArray<int>& limitDependency, int numIterations,
+                                                 bool useSparsity) {
+  // The one lock of the process (one for Bullet's one flag).
+  static std::mutex pivoting;
+  const std::lock_guard<std::mutex> lock(pivoting);
+  return btDantzigSolver::solveMLCP(A, b, x, lo, hi, limitDependency, numIterations, useSparsity);
+}
+
 IslandSolver::IslandSolver(ContactSolver choice, int rowLimit, double gravity)
     : btMLCPSolver(&activeSet_), choice_(choice), rowLimit_(rowLimit), gravity_(std::abs(gravity)) {}
+
+std::unique_ptr<IslandSolver> IslandSolver::helper() const {
+  return std::make_unique<IslandSolver>(choice_, rowLimit_, gravity_);
+}
+
+void IslandSolver::followSettings(const IslandSolver& lead) {
+  gravity_ = lead.gravity_;
+  sweepsOnly_ = lead.sweepsOnly_;
+  loaded_.clear();
+  loaded_.insertAll(lead.loaded_);
+  settling_ = lead.settling_;
+  impactSweeps_ = lead.impactSweeps_;
+}
+
+void IslandSolver::takeTally(IslandSolver& helper) {
+  SolverUse& from = helper.use_;
+  use_.direct += from.direct;
+  use_.guessed += from.guessed;
+  use_.swept += from.swept;
+  use_.longSwept += from.longSwept;
+  use_.fallbacks += from.fallbacks;
+  use_.largestIsland = std::max(use_.largestIsland, from.largestIsland);
+  work_ += helper.work_;
+  swept_.insertAll(helper.swept_);
+  longSweepsTaken_ = longSweepsTaken_ || helper.longSweepsTaken_;
+  helper.use_ = {};
+  helper.work_ = {};
+  helper.swept_.clear();
+  helper.longSweepsTaken_ = false;
+}
 
 IslandSolver::Way IslandSolver::chooseWay(btPersistentManifold** manifolds, int numManifolds,
                                          int numConstraints) const {

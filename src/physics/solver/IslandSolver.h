@@ -1,5 +1,6 @@
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include <BulletDynamics/MLCPSolvers/btDantzigSolver.h>
@@ -16,7 +17,16 @@ namespace tabletop {
 /// so that they are made before btMLCPSolver, which keeps a pointer to the
 /// active-set solver from its constructor on.
 struct IslandSolverParts {
-  btDantzigSolver dantzig_;
+  /// Bullet's pivoting, one call at a time in the process: it reports a
+  /// failure through a global flag (s_error, btDantzigLCP.cpp), which two
+  /// islands pivoted at once on two threads would share.
+  class LockedDantzig : public btDantzigSolver {
+   public:
+    bool solveMLCP(const btMatrixXu& A, const btVectorXu& b, btVectorXu& x, const btVectorXu& lo,
+                   const btVectorXu& hi, const btAlignedObjectArray<int>& limitDependency, int numIterations,
+                   bool useSparsity = true) override;
+  };
+  LockedDantzig dantzig_;
   ActiveSetSolver activeSet_{dantzig_};  // the MLCP solver: a guess first, else dantzig_
 };
 
@@ -68,6 +78,17 @@ class IslandSolver : private IslandSolverParts, public btMLCPSolver {
   btScalar solveGroup(btCollisionObject** bodies, int numBodies, btPersistentManifold** manifolds, int numManifolds,
                       btTypedConstraint** constraints, int numConstraints, const btContactSolverInfo& info,
                       btIDebugDraw* debugDrawer, btDispatcher* dispatcher) override;
+
+  /// A solver for another thread: the same choice, row limit and
+  /// gravity. Its islands are solved as this one would solve them once it
+  /// follows this one's settings (followSettings()).
+  std::unique_ptr<IslandSolver> helper() const;
+  /// Takes the lead's settings for the coming solve: sweeps only, the
+  /// loaded and settling bodies, the impact sweeps, gravity.
+  void followSettings(const IslandSolver& lead);
+  /// Adds what `helper` counted (use(), work(), swept(), the long sweeps)
+  /// to this solver's, and clears them in the helper.
+  void takeTally(IslandSolver& helper);
 
   /// How the islands were solved since the solver was made.
   const SolverUse& use() const { return use_; }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <unordered_map>
 #include <utility>
@@ -8,6 +9,7 @@
 #include <btBulletDynamicsCommon.h>
 
 #include "core/WorkCount.h"
+#include "core/WorkerThreads.h"
 
 #include "physics/contact/BodySet.h"
 #include "physics/solver/ContactIslands.h"
@@ -46,6 +48,7 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   /// Bullet's world with its islands joined by contacts (ContactIslands).
   DynamicsWorld(btDispatcher* dispatcher, btBroadphaseInterface* broadphase, btConstraintSolver* solver,
                 btCollisionConfiguration* configuration);
+  ~DynamicsWorld() override;
 
   /// The largest acceleration smooth forces (gravity, sliding friction)
   /// give a body, m/s^2: a velocity change beyond it times the step is an
@@ -68,6 +71,10 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   /// What acts on bodies besides gravity through the next step(s), applied
   /// in every part where gravity is.
   void setLoads(std::vector<Load> loads);
+  /// Solves independent islands on `threads` threads (the calling one
+  /// included; 1: on it alone). The result is the same to the bit for any
+  /// count (SolveIslands.cpp).
+  void setThreads(int threads);
   /// Turns the second-order position update on (off by default).
   void setSecondOrderPositions(bool on) { secondOrder_ = on; }
 
@@ -162,6 +169,23 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   // aside.
   bool crossesAside();
   bool slipCounts(const Slip& slip, double length, double g) const;
+
+  // Stage 6's islands, each solved by Bullet's solver or, with tabletop's
+  // and more than one thread, shared out among the threads, one
+  // IslandSolver each (SolveIslands.cpp).
+  void solveIslands(btContactSolverInfo& solverInfo);
+  struct IslandJob {
+    std::size_t firstBody;  // in islandBodies_
+    int numBodies;
+    btPersistentManifold** manifolds;
+    int numManifolds;
+  };
+  std::vector<IslandJob> islandJobs_;    // this solve's, in Bullet's island order
+  std::vector<IslandJob> kinematicJobs_; // those touching a kinematic body: on the calling thread
+  std::vector<btCollisionObject*> islandBodies_;
+  std::unique_ptr<WorkerThreads> threads_;
+  std::vector<std::unique_ptr<IslandSolver>> helpers_;  // one a thread beyond the first
+
   StepGroups groups_;
   BodySet eventful_;  // bodies with an event in the first part
   BodySet retaken_;   // the bodies of their groups

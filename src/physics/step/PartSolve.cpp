@@ -38,7 +38,7 @@ void DynamicsWorld::scaleCarriedImpulses(double ratio) {
 void DynamicsWorld::solveUntouched(const Part& part, btContactSolverInfo& solverInfo) {
   solverInfo.m_timeStep = part.length;
   meanTurn_.clear();
-  btDiscreteDynamicsWorld::solveConstraints(solverInfo);
+  solveIslands(solverInfo);
   closing_.clear();
   noteSolved(closing_, {});
   forgetBounced();
@@ -121,7 +121,7 @@ SlipTurn DynamicsWorld::solvePart(Part& part, btContactSolverInfo& solverInfo, c
     // has its islands found afresh.
     if (how == PartSolve::kAfterSlipCut) calculateSimulationIslands();
     if (islandSolver_) islandSolver_->forgetSwept();
-    btDiscreteDynamicsWorld::solveConstraints(solverInfo);
+    solveIslands(solverInfo);
     if (!mayTurn.empty()) turn = earliestSlipTurn(mayTurn, g, part.length, kSlipShare);
     if (!turn.manifold) noteSolved(closing, slipping);
   }
