@@ -108,17 +108,20 @@ class CarriedImpulses {
 
  private:
   struct Saved {
-    const btPersistentManifold* manifold;
     const btCollisionObject* body0;
     const btCollisionObject* body1;
     btVector3 localA, localB;  // in each body's frame
     btScalar impulse, lateral1, lateral2;
     int lifeTime;
-    int order;  // saved this many before it
   };
-  struct Before;
-  std::vector<Saved> saved_;  // by manifold
-  std::vector<Saved*> gone_;  // restore's, kept to reuse its storage
+  // A manifold's saved points: saved_[first, first + count).
+  struct Range {
+    const btPersistentManifold* manifold;
+    std::size_t first, count;
+  };
+  std::vector<Saved> saved_;   // a manifold's points together, in its order
+  std::vector<Range> ranges_;  // by manifold: restore() finds one by a search
+  std::vector<Saved*> gone_;   // restore's, kept to reuse its storage
 };
 
 /// Removes the points of `manifold` that no longer mark where its bodies
