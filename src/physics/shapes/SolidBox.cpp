@@ -1,6 +1,7 @@
 #include "physics/shapes/SolidBox.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -69,20 +70,43 @@ void finishBoxPolyhedron(btConvexPolyhedron& p, const btVector3& half) {
   p.mE = half * 2;
 }
 
+// Bullet's hull of a box whose longest side is along `maxAxis` and
+// shortest along `minAxis`, as its hull computer names them: it scales
+// each axis of the corners to the same integer range and lays them out by
+// those two axes, so every such box gets the same vertices and faces in
+// the same order (tests/physics/shapes/SolidBoxTest.cpp holds that over
+// sizes and shapes).
+btConvexPolyhedron boxHull(int maxAxis, int minAxis) {
+  btVector3 half(2, 2, 2);
+  half[maxAxis] = 3;
+  half[minAxis] = 1;
+  btBoxShape box(half);  // features over a shape's own leak: this one is thrown away
+  box.initializePolyhedralFeatures();
+  return *box.getConvexPolyhedron();
+}
+
 }  // namespace
 
 void initializeExactBoxFeatures(btBoxShape& box) {
-  // Bullet's hull is built on a box of the same size, which frees it:
-  // setting features over a shape's own leaks its faces' index arrays
-  // (btAlignedObjectArray copies faces over faces without destroying them).
+  // Built once for each layout: building the hull cost each box a million
+  // instructions, most in btConvexPolyhedron::initialize's containment
+  // search, a quarter of stepping a field of a thousand cubes for half a
+  // second.
+  static const std::array<btConvexPolyhedron, 9> kHulls = [] {
+    std::array<btConvexPolyhedron, 9> hulls;
+    for (int maxAxis = 0; maxAxis < 3; ++maxAxis) {
+      for (int minAxis = 0; minAxis < 3; ++minAxis) {
+        if (minAxis != maxAxis) hulls[static_cast<std::size_t>(3 * maxAxis + minAxis)] = boxHull(maxAxis, minAxis);
+      }
+    }
+    return hulls;
+  }();
   const btVector3 half = box.getHalfExtentsWithMargin();
-  btBoxShape scratch(half);
-  scratch.setMargin(box.getMargin());
-  scratch.initializePolyhedralFeatures();
-  btConvexPolyhedron exact = *scratch.getConvexPolyhedron();
+  const int maxAxis = half.maxAxis();
+  const int minAxis = half.minAxis() != maxAxis ? half.minAxis() : (maxAxis + 1) % 3;
+  btConvexPolyhedron exact = kHulls[static_cast<std::size_t>(3 * maxAxis + minAxis)];
   // Each corner is at +-half on every axis, each face's normal on one axis
-  // at half from the centre: Bullet's hull has them within a fraction of
-  // the size, so the nearest of those is the one meant.
+  // at half from the centre.
   for (int v = 0; v < exact.m_vertices.size(); ++v) {
     for (int a = 0; a < 3; ++a) exact.m_vertices[v][a] = std::copysign(half[a], exact.m_vertices[v][a]);
   }
