@@ -201,6 +201,8 @@ class World : public Simulation {
   // gives.
   std::vector<std::pair<int, int>> touching_;
   std::vector<Contact> contacts_;
+  std::vector<Contact> byEntity_;          // gatherContacts' scratch
+  std::vector<std::size_t> contactEnds_;  // gatherContacts' scratch: where each entity's entries end
   std::vector<std::pair<int, int>> touchingNow_;
   std::vector<int> supports_;
   std::vector<double> strongest_;

@@ -140,9 +140,21 @@ void World::gatherContacts() {
     if (a >= 0) contacts_.push_back({a, b, 0.0, up > kSupportNormalY ? 0.0 : -1.0});
     if (b >= 0) contacts_.push_back({b, a, 0.0, -up > kSupportNormalY ? 0.0 : -1.0});
   }
-  std::sort(contacts_.begin(), contacts_.end(), [](const Contact& x, const Contact& y) {
-    return x.entity != y.entity ? x.entity < y.entity : x.other < y.other;
-  });
+  // By entity and other: counted out by entity, then each entity's few
+  // sorted by the other body, linear in the entries (one sort of them all
+  // was a tenth of a step of a field of cubes).
+  std::vector<std::size_t>& end = contactEnds_;
+  end.assign(entities_.size() + 1, 0);
+  for (const Contact& c : contacts_) ++end[static_cast<std::size_t>(c.entity) + 1];
+  for (std::size_t i = 1; i < end.size(); ++i) end[i] += end[i - 1];
+  byEntity_.resize(contacts_.size());
+  for (const Contact& c : contacts_) byEntity_[end[static_cast<std::size_t>(c.entity)]++] = c;
+  for (std::size_t i = 0; i < entities_.size(); ++i) {
+    const auto first = byEntity_.begin() + static_cast<std::ptrdiff_t>(i == 0 ? 0 : end[i - 1]);
+    const auto last = byEntity_.begin() + static_cast<std::ptrdiff_t>(end[i]);
+    if (last - first > 1) std::sort(first, last, [](const Contact& x, const Contact& y) { return x.other < y.other; });
+  }
+  contacts_.swap(byEntity_);
   // Merge: the closest distance, and the summed upward impulse (or -1 when
   // the other body does not hold the entity up).
   std::size_t merged = 0;
