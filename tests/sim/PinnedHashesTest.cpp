@@ -61,7 +61,7 @@ INSTANTIATE_TEST_SUITE_P(
                       Pinned{"example4_two_spheres", SimulationMode::Bullet, "3edc75d11e77ea81"},
                       Pinned{"example4_two_spheres", SimulationMode::Compat, "ed2d72487f819b75"},
                       Pinned{"example4_two_spheres", SimulationMode::Rules, "40be062e5a617c64"},
-                      Pinned{"misaligned_cubes", SimulationMode::Bullet, "917b131ba45495b5"},
+                      Pinned{"misaligned_cubes", SimulationMode::Bullet, "7ef4d81fccd0b6cd"},
                       Pinned{"misaligned_cubes", SimulationMode::Compat, "c91a6158762e75ae"},
                       Pinned{"misaligned_cubes", SimulationMode::Rules, "67f34f8816947c11"},
                       Pinned{"sphere_bounces_back", SimulationMode::Bullet, "3bd4425e69a17beb"},

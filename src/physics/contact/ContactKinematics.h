@@ -16,6 +16,11 @@ inline constexpr double kTouching = 1e-6;
 /// load: a resting point sits within the solver's slop of touching.
 inline constexpr double kLoadTouching = 1e-4;
 
+/// A touching point carries a load (gravity presses its bodies together)
+/// when its normal is within 45 degrees of the vertical: its vertical
+/// component is at least this (cos 45).
+inline constexpr double kLoadNormal = 0.7071;
+
 /// Points that close within this time, s, of each other strike together:
 /// a face landing on a face, found a few micrometres apart at one corner
 /// and touching at another (GJK's distance is good to about 1e-3 of

@@ -16,9 +16,6 @@
 namespace tabletop {
 namespace {
 
-// A point carries a load when the bodies touch (within kLoadTouching) and
-// its normal is within 45 degrees of the vertical (cos 45).
-constexpr double kLoadNormal = 0.7071;
 // A touching point slides when its bodies slip over each other faster
 // than this, m/s.
 constexpr double kSlideSpeed = 1e-3;
