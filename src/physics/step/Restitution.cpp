@@ -107,7 +107,8 @@ class ForcesSetAside {
 // point gets restitution in its solve.
 void DynamicsWorld::resolveTouchingImpacts(const Part& part, btContactSolverInfo& solverInfo) {
   btDispatcher* dispatcher = getDispatcher();
-  bool any = false;
+  bool any = false;      // a point strikes now
+  bool bounces = false;  // ... with restitution
   for (int m = 0; m < dispatcher->getNumManifolds(); ++m) {
     btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
     const double restitution = restitutionOf(*manifold);
@@ -127,6 +128,7 @@ void DynamicsWorld::resolveTouchingImpacts(const Part& part, btContactSolverInfo
       point.m_combinedRestitution = strikes ? restitution : 0.0;
       if (strikes) point.m_contactPointFlags |= kBouncedFlag;
       any |= strikes;
+      bounces |= strikes && restitution > 0;
     }
   }
   if (!any) return;
@@ -162,13 +164,11 @@ void DynamicsWorld::resolveTouchingImpacts(const Part& part, btContactSolverInfo
     bodies.push_back(body);
     before.emplace_back(body->getLinearVelocity(), body->getAngularVelocity());
   }
-  // Swept, never pivoted: restitution is exact only without the pivoting's
-  // compliance, and the energy blend below assumes a dissipative solve.
-  bool bounces = false;
-  for (int m = 0; m < dispatcher->getNumManifolds() && !bounces; ++m) {
-    const btPersistentManifold* manifold = dispatcher->getManifoldByIndexInternal(m);
-    for (int p = 0; p < manifold->getNumContacts(); ++p) bounces |= manifold->getContactPoint(p).m_combinedRestitution > 0;
-  }
+  // Swept where a point bounces: restitution is exact only without the
+  // pivoting's compliance, and the energy blend below assumes a
+  // dissipative solve. With no bounce it is solved as an island is
+  // (pivoted where it fits): the sweeps left a corner strike turned a few
+  // degrees from where finer steps converge.
   IslandSolver* islands = bounces ? islandSolver_ : nullptr;
   const auto solve = [&] {
     const IslandSolver::SweepsOnly swept(islands);
