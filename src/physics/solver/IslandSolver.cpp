@@ -165,7 +165,26 @@ IslandSolver::Way IslandSolver::chooseWay(btPersistentManifold** manifolds, int 
 void IslandSolver::convertContacts(btPersistentManifold** manifolds, int numManifolds,
                                    const btContactSolverInfo& info) {
   btSequentialImpulseConstraintSolver::convertContacts(manifolds, numManifolds, info);
+  seeTorquesInFriction();
   if (info.m_solverMode & SOLVER_USE_2_FRICTION_DIRECTIONS) dropSlidingCrossFriction(info.m_timeStep);
+}
+
+void IslandSolver::seeTorquesInFriction() {
+  // Bullet's gyroscopic term turns a spin to the body's frame and back,
+  // leaving rounding where there is no term (a cube): that is left out.
+  const auto turned = [](const btSolverBody& body) {
+    return body.m_originalBody &&
+           body.m_externalTorqueImpulse.length2() > kRoundedTorque * kRoundedTorque * body.m_angularVelocity.length2();
+  };
+  for (int i = 0; i < m_tmpSolverContactFrictionConstraintPool.size(); ++i) {
+    btSolverConstraint& row = m_tmpSolverContactFrictionConstraintPool[i];
+    const btSolverBody& a = m_tmpSolverBodyPool[row.m_solverBodyIdA];
+    const btSolverBody& b = m_tmpSolverBodyPool[row.m_solverBodyIdB];
+    btScalar missed = 0;
+    if (turned(a)) missed += row.m_relpos1CrossNormal.dot(a.m_externalTorqueImpulse);
+    if (turned(b)) missed += row.m_relpos2CrossNormal.dot(b.m_externalTorqueImpulse);
+    row.m_rhs -= missed * row.m_jacDiagABInv;
+  }
 }
 
 void IslandSolver::dropSlidingCrossFriction(double timeStep) {

@@ -187,6 +187,16 @@ class IslandSolver : private IslandSolverParts, public btMLCPSolver {
   enum class Way { Sweep, Pivot, LongSweeps };
   Way chooseWay(btPersistentManifold** manifolds, int numManifolds, int numConstraints) const;
   void dropSlidingCrossFriction(double timeStep);
+  // Adds to each friction row what the bodies' applied torques over the
+  // part (the gyroscopic term among them) do to its speed. Bullet's
+  // friction rows leave it out, though its normal rows and its update of
+  // the velocities take it in: a body turning about an axis not its
+  // principal one, or under an applied torque, slipped where friction
+  // could hold it (docs/bullet-corrections.md).
+  void seeTorquesInFriction();
+  // A torque's change of spin over the part below this share of the spin
+  // is rounding.
+  static constexpr double kRoundedTorque = 1e-12;
   // After the sweeps: each friction impulse within its point's final cone
   // (mu times the normal impulse), the bodies' velocities changed to match.
   // A sweep leaves a friction row untouched while its normal impulse is

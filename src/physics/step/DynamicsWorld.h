@@ -16,7 +16,9 @@
 #include "physics/collision/ContactResult.h"
 #include "physics/step/FaceExits.h"
 #include "physics/step/FreeFlight.h"
+#include "physics/step/RollingLines.h"
 #include "physics/step/ImpactSearch.h"
+#include "physics/step/KeptOut.h"
 #include "physics/step/PartGuards.h"
 #include "physics/step/SlipEvents.h"
 #include "physics/step/StepGroups.h"
@@ -350,8 +352,13 @@ class DynamicsWorld : public btDiscreteDynamicsWorld {
   BodySet kicked_;  // noteKicked's
   std::vector<btVector3> startVelocities_;
   std::vector<btVector3> startSpins_;    // rad/s, read with startVelocities_
-  std::vector<btTransform> startPoses_;  // each body's at the part's start, when one turns by its mean rate
+  std::vector<btTransform> startPoses_;  // each body's at the part's start
   BodySet meanTurn_;  // bodies with rows held at the mean
+  RollingLines rolling_;  // bodies rolling on a line that turns
+  KeptOut keptOut_;       // points the integration keeps out of fixed supports
+  BodySet rolled_;        // those whose velocity it turned this part
+  std::vector<std::pair<btRigidBody*, int>> rollingFlags_;  // and their own flags
+  void carryRolling();    // turns their velocity (RollingLines::transport)
   // solvePart's, kept to reuse their storage: the impulses a part carries
   // on, the points closing at its start and their bodies.
   std::vector<std::pair<btManifoldPoint*, btVector3>> partCarried_;

@@ -27,6 +27,7 @@ void DynamicsWorld::saveStepStart() {
   carriedStart_.settling[1] = settling_[1];
   carriedStart_.sliding = sliding_;
   carriedStart_.endVelocities = endVelocities_;
+  rolling_.save();
   slipEndStart_ = lastSlipEnd_;
 }
 
@@ -187,6 +188,7 @@ void DynamicsWorld::stepGroupsApart(double dt) {
                                [&](const Struck& s) { return retaken_.contains(s.a) || retaken_.contains(s.b); }),
                 struck_.end());
   putBackCarried(dt);
+  rolling_.putBack(retaken_);
   setAside(aside_);
   takeParts(dt, false);
   bringBack();
@@ -201,6 +203,7 @@ void DynamicsWorld::stepGroupsApart(double dt) {
     putBackAll_ = true;
     struck_.clear();
     putBackCarried(dt);
+    rolling_.putBackAll();
     endVelocities_ = carriedStart_.endVelocities;
     takeParts(dt, false);
     return;

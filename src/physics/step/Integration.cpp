@@ -48,13 +48,16 @@ void DynamicsWorld::integrate(const Part& part) {
   freeFlight_.start(startSpins_, part.length);
   integrateMotions(part);
   freeFlight_.finish();
+  for (const auto& [body, flags] : rollingFlags_) body->setFlags(flags);
+  rollingFlags_.clear();
 }
 
 void DynamicsWorld::integrateMotions(const Part& part) {
   const btScalar timeStep = part.length;
   const bool smooth = secondOrder_ && smoothAcceleration_ > 0;
-  // The poses a mean turn starts from, kept only when a body turns so.
-  if (smooth && !meanTurn_.empty()) {
+  if (smooth) {
+    rolling_.record(*getDispatcher(), timeStep, aside_);
+    keptOut_.collect(*getDispatcher(), m_nonStaticRigidBodies, timeStep);
     startPoses_.resize(static_cast<std::size_t>(m_nonStaticRigidBodies.size()));
     for (int i = 0; i < m_nonStaticRigidBodies.size(); ++i) {
       startPoses_[static_cast<std::size_t>(i)] = m_nonStaticRigidBodies[i]->getWorldTransform();
@@ -121,6 +124,12 @@ void DynamicsWorld::integrateMotions(const Part& part) {
                                           body->getAngularVelocity() - turn / 2, timeStep, pose);
     }
     pose.setOrigin(pose.getOrigin() - mean * (timeStep / 2));
+    const auto at = static_cast<std::size_t>(i);
+    if (rolling_.turning()) {
+      rolling_.turnAt(*body, startPoses_[at], (body->getLinearVelocity() + startVelocities_[at]) / 2,
+                      (body->getAngularVelocity() + startSpins_[at]) / 2, timeStep, pose);
+    }
+    keptOut_.keepOut(i, startPoses_[at], pose);
     body->proceedToTransform(pose);
   }
 }

@@ -184,6 +184,8 @@ void DynamicsWorld::solveContacts(Part& part, btContactSolverInfo& solverInfo) {
     pointsBack_ = nullptr;
     putBackAll_ = false;
   }
+  // Bodies rolling on a line that turned: their velocity turned with it.
+  if (secondOrder_ && smoothAcceleration_ > 0) carryRolling();
   // 4. Restitution: touching points closing at an impact's speed bounce now.
   resolveTouchingImpacts(part, solverInfo);
   // 5. Events: the part ends at the next impact or face exit inside it.
@@ -229,6 +231,29 @@ void DynamicsWorld::dropStalePoints() {
     } else if (upkeep == PointUpkeep::kFoundAfresh) {
       dropDriftedPoints(*manifold);
     }
+  }
+}
+
+void DynamicsWorld::carryRolling() {
+  const std::vector<btRigidBody*>& moved = rolling_.transport(*getDispatcher(), kicked_);
+  // Their gyroscopic term is left out of this part's solve: the turn it
+  // gives a body rolling on a line is the line's, carried above, and
+  // Bullet's one-sided step of it lost (implicit) or gained (explicit,
+  // midpoint) spin at first order.
+  constexpr int kGyroscopicFlags = BT_ENABLE_GYROSCOPIC_FORCE_EXPLICIT | BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_WORLD |
+                                   BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY;
+  for (btRigidBody* body : moved) {
+    rollingFlags_.emplace_back(body, body->getFlags());
+    body->setFlags(body->getFlags() & ~kGyroscopicFlags);
+  }
+  if (moved.empty() || startVelocities_.size() != static_cast<std::size_t>(m_nonStaticRigidBodies.size())) return;
+  rolled_.clear();
+  for (const btRigidBody* body : moved) rolled_.insert(body);
+  for (int i = 0; i < m_nonStaticRigidBodies.size(); ++i) {
+    const btRigidBody* body = m_nonStaticRigidBodies[i];
+    if (!rolled_.contains(body)) continue;
+    startVelocities_[static_cast<std::size_t>(i)] = body->getLinearVelocity();
+    startSpins_[static_cast<std::size_t>(i)] = body->getAngularVelocity();
   }
 }
 
