@@ -11,6 +11,7 @@
 #include "core/Simulation.h"
 #include "io/ProcessPool.h"
 #include "physics/StepPush.h"
+#include "scenes/ConeRoll.h"
 #include "sim/SceneBuilder.h"
 #include "sim/ScriptRunner.h"
 
@@ -36,6 +37,15 @@ const ShapeSize kSpheres[] = {{"sphere", "0.05", 0.05, 0.05}, {"sphere", "0.1", 
 // slides when pushed along it.
 const ShapeSize kRolling = {"cylinder", "[0.05, 0.05, 0.1]", 0.05, 0.05, PushCase::Lying::Across};
 const ShapeSize kSlidingAlong = {"cylinder", "[0.05, 0.05, 0.1]", 0.05, 0.05, PushCase::Lying::Along};
+// Cones and a truncated cone rolling on their sides (scenes/ConeRoll.h).
+struct Roller {
+  ShapeSize shape;
+  double base, top, height;  // m
+};
+const Roller kRollers[] = {{{"cylinder", "[0.05, 0, 0.1]", 0, 0}, 0.05, 0, 0.1},
+                           {{"cylinder", "[0.03, 0, 0.12]", 0, 0}, 0.03, 0, 0.12},
+                           {{"cylinder", "[0.05, 0.03, 0.1]", 0, 0}, 0.05, 0.03, 0.1}};
+const double kPrecessions[] = {-2.0, 3.0};  // rad/s
 const double kRestitutions[] = {0.0, 0.5, 0.9};
 const double kAngles[] = {0.0, 45.0, 77.0, 200.0};
 
@@ -115,6 +125,33 @@ LawPoint measureSpin(const ShapeSize& shape, const char* support, double rate) {
   return point;
 }
 
+// A cone rolling on its side against its circle (rollCentre()): the worst
+// distance of its centre of mass from the circle over the run.
+LawPoint measureCircle(const ShapeSize& shape, const char* support, double rate) {
+  LawPoint point{"circle", std::string(shape.shape) + " " + shape.size, support, rate, 0.0, 0.0};
+  for (const Roller& roller : kRollers) {
+    if (&roller.shape != &shape) continue;
+    for (const double precession : kPrecessions) {
+      RollCase c;
+      c.support = support;
+      c.baseRadius = roller.base, c.topRadius = roller.top, c.height = roller.height;
+      c.precession = precession;
+      c.rate = rate;
+      const Scenario s = rollScene(c);
+      const Vec3 apex = rollApex(c), start = rollCentre(c, 0);
+      const double radius = std::hypot(start.x - apex.x, start.z - apex.z);
+      auto sim = buildSimulation(s, s.settings, SimulationMode::Bullet);
+      while (sim->time() + 0.5 * s.settings.timestep < kRollDuration) {
+        sim->step();
+        const Vec3 x = sim->snapshot().back().position;
+        point.worstError =
+            std::max(point.worstError, std::hypot(std::hypot(x.x - apex.x, x.z - apex.z) - radius, x.y - start.y));
+      }
+    }
+  }
+  return point;
+}
+
 // A drop from kDropHeight against dropHeight(), followed until dropEnd():
 // the worst error of the centre's height.
 LawPoint measureBounce(const ShapeSize& shape, const char* support, double rate) {
@@ -146,6 +183,7 @@ std::vector<LawPoint> measureLaws(const std::vector<double>& rates, const Measur
   for (const ShapeSize& s : kSolids) laws.emplace_back("step", &s);
   for (const ShapeSize& s : kSpheres) laws.emplace_back("step", &s);
   for (const ShapeSize& s : kSolids) laws.emplace_back("spin", &s);
+  for (const Roller& r : kRollers) laws.emplace_back("circle", &r.shape);
   laws.emplace_back("bounce", &kSpheres[0]);
   for (const ShapeSize& s : kSolids) laws.emplace_back("bounce", &s);
   // One run per law, shape, support and rate, in that order.
@@ -166,6 +204,7 @@ std::vector<LawPoint> measureLaws(const std::vector<double>& rates, const Measur
     const Run& r = runs[i];
     return *r.law == "bounce" ? measureBounce(*r.shape, r.support, r.rate)
            : *r.law == "spin" ? measureSpin(*r.shape, r.support, r.rate)
+           : *r.law == "circle" ? measureCircle(*r.shape, r.support, r.rate)
                               : measure(*r.law, *r.shape, r.support, r.rate);
   };
   std::vector<LawPoint> points;
@@ -195,7 +234,7 @@ ResultTable lawTable(const std::vector<LawPoint>& points) {
   ResultTable t;
   t.title =
       "laws: the worst error against the closed form, over pushes at 0, 45, 77 and 200 degrees, over drops at "
-      "e = 0, 0.5 and 0.9, or over spins of 5 and -12 rad/s";
+      "e = 0, 0.5 and 0.9, over spins of 5 and -12 rad/s, or over precessions of -2 and 3 rad/s";
   std::vector<double> rates;
   for (const LawPoint& p : points) {
     if (std::find(rates.begin(), rates.end(), p.rate) == rates.end()) rates.push_back(p.rate);
@@ -228,7 +267,7 @@ ResultTable lawTable(const std::vector<LawPoint>& points) {
       row.push_back(cell(nlohmann::json((*found)->worstError), ResultTable::Cell(cell((*found)->worstError * 1000.0, 4)).shown));
       turn = std::max(turn, (*found)->worstTurn);
     }
-    row.push_back(shape.rfind("sphere", 0) == 0 || law == "spin" ? cell(nullptr, "-") : cell(turn, 3));
+    row.push_back(shape.rfind("sphere", 0) == 0 || law == "spin" || law == "circle" ? cell(nullptr, "-") : cell(turn, 3));
     t.rows.push_back(std::move(row));
   }
   return t;

@@ -21,6 +21,10 @@ namespace tabletop {
 ///    -12 rad/s turn w0^2 / (2 alpha) and stay where they stand
 ///    (tests/physics/laws/SpinTest.cpp); the error is how far the base's contact
 ///    points end from their closed-form place, or the drift if larger;
+///  - circle: cones and a truncated cone set rolling on their sides,
+///    precessing at -2 and 3 rad/s, keep their centre of mass on its level
+///    circle about the apex for 3 s (scenes/ConeRoll.h,
+///    tests/physics/laws/ConeRollTest.cpp);
 ///  - bounce: a sphere, and every other shape landing flat, dropped 0.3 m
 ///    with e = 0, 0.5 and 0.9, follows free fall and its rebound at e
 ///    times the impact speed (tests/physics/laws/RestitutionTest.cpp).

@@ -20,12 +20,15 @@ constexpr const char* kDrum = R"({"name": "Base", "shape": "cylinder", "size": [
 constexpr double kBaseTop = 0.1;   // m, the slab's and the drum's top
 constexpr double kTableTop = 0.75;  // m, the default table's
 
-// The entity a support needs in the scene, first, or nothing.
-const char* baseOf(const std::string& support) {
+}  // namespace
+
+const char* supportEntity(const std::string& support) {
   return support == "slab" ? kSlab : support == "drum" ? kDrum : "";
 }
 
-}  // namespace
+double supportTop(const std::string& support) {
+  return support == "table" ? kTableTop : support == "ground" ? 0.0 : kBaseTop;
+}
 
 std::pair<double, double> pushStart(const PushCase& c) {
   if (c.support == "table") return {-0.3 * std::cos(convertAngle(c.angle)), 0.3 * std::sin(convertAngle(c.angle))};
@@ -40,7 +43,7 @@ Scenario pushScene(const PushCase& c) {
   text << R"({"version": 1, "name": "push", "table": {"size": [2.0, 2.0], "material": {"friction": 1}},
     "ground": {"material": {"friction": 1}}, "settings": {"timestep": )"
        << 1.0 / c.rate << R"(, "duration": 3}, "entities": [)";
-  text << baseOf(c.support);
+  text << supportEntity(c.support);
   text << R"({"name": "A", "shape": ")" << c.shape << R"(", "size": )" << c.size << R"(, "position": [)" << x0
        << ", " << z0 << R"(], "on": ")" << (base ? "Base" : c.support) << R"(", "mass": )" << kPushedMass
        << R"(, "material": {"friction": )" << c.friction << R"(, "rolling_friction": )" << c.rollingFriction
@@ -117,8 +120,7 @@ std::string describe(const PushCase& c) {
 }
 
 double dropTouchHeight(const DropCase& c) {
-  const double top = c.support == "table" ? kTableTop : c.support == "ground" ? 0.0 : kBaseTop;
-  return top + c.below;
+  return supportTop(c.support) + c.below;
 }
 
 double dropHeight(const DropCase& c, double gravity, double t) {
@@ -139,7 +141,7 @@ Scenario dropScene(const DropCase& c) {
   text << R"({"version": 1, "name": "drop", "ground": {"material": {"restitution": 1}},
     "table": {"material": {"restitution": 1}}, "settings": {"timestep": )"
        << 1.0 / c.rate << R"(, "duration": 1.2, "end_at_rest": false}, "entities": [)";
-  text << baseOf(c.support);
+  text << supportEntity(c.support);
   text << R"({"name": "A", "shape": ")" << c.shape << R"(", "size": )" << c.size << R"(, "position": [)"
        << (c.support == "table" ? 0.0 : 3.0) << ", " << dropTouchHeight(c) + kDropHeight
        << R"(, 0.0], "mass": 1.0, "material": {"restitution": )" << c.restitution << "}}]}";

@@ -15,6 +15,14 @@ namespace tabletop {
 /// 100 kg cylinder 0.8 m in radius and 0.1 m high standing there.
 inline constexpr const char* kLawSupports[] = {"table", "ground", "slab", "drum"};
 
+/// The entity a support needs first in a law's scene, as JSON followed by
+/// ", " (the slab's or the drum's, named "Base"; "" for the table and the
+/// floor).
+const char* supportEntity(const std::string& support);
+
+/// The support's top, m.
+double supportTop(const std::string& support);
+
 /// One entity pushed across a support, the scene of the sliding, rolling,
 /// step and spinning laws: 1.5 kg, pushed (or spun) at a
 /// world angle from the table's centre (0.3 m back from it), or 3 m from
