@@ -100,6 +100,19 @@ const std::vector<RollingLines::Line>& RollingLines::findLines(btDispatcher& dis
   return out;
 }
 
+bool RollingLines::rollsAbout(const btRigidBody& body, const Line& line) {
+  const btVector3 spin = body.getAngularVelocity();
+  const btVector3 linear = body.getLinearVelocity();
+  const double rate = spin.length();
+  const double length = line.a.distance(line.b);
+  if (rate <= 0) return false;
+  const btVector3 unit = (line.b - line.a) / length;
+  const double slip = kRolls * rate * length;
+  return spin.cross(unit).length() <= kRolls * rate &&
+         (linear + spin.cross(line.a - line.centre)).length() <= slip &&
+         (linear + spin.cross(line.b - line.centre)).length() <= slip;
+}
+
 void RollingLines::record(btDispatcher& dispatcher, double partLength, const BodySet& aside) {
   std::vector<Rolled> kept;
   for (const Rolled& r : recorded_) {
@@ -109,17 +122,9 @@ void RollingLines::record(btDispatcher& dispatcher, double partLength, const Bod
   turns_.clear();
   for (const Line& line : findLines(dispatcher)) {
     const auto& body = *static_cast<const btRigidBody*>(line.body);
-    const btVector3 spin = body.getAngularVelocity();
-    const btVector3 linear = body.getLinearVelocity();
-    const double rate = spin.length();
+    if (aside.contains(line.body) || !rollsAbout(body, line)) continue;
     const double length = line.a.distance(line.b);
-    if (rate <= 0 || aside.contains(line.body)) continue;
-    const btVector3 unit = (line.b - line.a) / length;
-    const double slip = kRolls * rate * length;
-    if (spin.cross(unit).length() > kRolls * rate) continue;
-    if ((linear + spin.cross(line.a - line.centre)).length() > slip) continue;
-    if ((linear + spin.cross(line.b - line.centre)).length() > slip) continue;
-    recorded_.push_back({line, linear, spin, partLength});
+    recorded_.push_back({line, body.getLinearVelocity(), body.getAngularVelocity(), partLength});
     // It turns about where its axis meets the support (none for a level axis).
     const btVector3 axis = body.getWorldTransform().getBasis().getColumn(1);
     if (std::abs(axis.dot(line.normal)) < kLevelAxis) continue;
@@ -136,11 +141,17 @@ void RollingLines::record(btDispatcher& dispatcher, double partLength, const Bod
 
 const std::vector<btRigidBody*>& RollingLines::transport(btDispatcher& dispatcher, const BodySet& kicked) {
   moved_.clear();
-  if (recorded_.empty()) return moved_;
+  rolling_.clear();
   for (const Line& now : findLines(dispatcher)) {
+    if (kicked.contains(now.body)) continue;
+    auto* body = static_cast<btRigidBody*>(const_cast<btCollisionObject*>(now.body));
     const auto found = std::lower_bound(recorded_.begin(), recorded_.end(), now.body,
                                         [](const Rolled& r, const btCollisionObject* key) { return byBody(r.line.body, key); });
-    if (found == recorded_.end() || found->line.body != now.body || kicked.contains(now.body)) continue;
+    if (found == recorded_.end() || found->line.body != now.body) {
+      // Not rolling on a line before (a scene's start): rolling on it now.
+      if (rollsAbout(*body, now)) rolling_.push_back(body);
+      continue;
+    }
     const Rolled& was = *found;
     const btVector3& n = now.normal;
     if (was.line.support != now.support || was.line.normal.dot(n) < 1 - kSameNormal || was.length <= 0) continue;
@@ -157,7 +168,6 @@ const std::vector<btRigidBody*>& RollingLines::transport(btDispatcher& dispatche
     if (centre.distance(now.a) > kFarthest * now.a.distance(now.b)) continue;
     // The velocity it rolled with, turned as the line turned: its spin,
     // and at the line's middle the old middle's velocity (none, rolling).
-    auto* body = static_cast<btRigidBody*>(const_cast<btCollisionObject*>(now.body));
     const btQuaternion q(n, turn);
     const btVector3 spin = body->getAngularVelocity();
     const btVector3 oldMiddle = (was.line.a + was.line.b) / 2, middle = (now.a + now.b) / 2;
@@ -166,6 +176,7 @@ const std::vector<btRigidBody*>& RollingLines::transport(btDispatcher& dispatche
     body->setAngularVelocity(turned);
     body->setLinearVelocity(atMiddle + turned.cross(body->getCenterOfMassPosition() - middle));
     moved_.push_back(body);
+    rolling_.push_back(body);
   }
   return moved_;
 }
@@ -176,20 +187,23 @@ bool RollingLines::turnAt(const btRigidBody& body, const btTransform& start, con
                                       [](const Turn& t, const btCollisionObject* key) { return byBody(t.body, key); });
   if (found == turns_.end() || found->body != &body) return false;
   const Turn& t = *found;
-  // How fast the line turns about the normal: as the axis's shadow on
-  // the support does.
-  const btVector3 shadow = t.axis - t.normal * t.normal.dot(t.axis);
-  const btVector3 turning = spin.cross(t.axis);
-  const btVector3 shadowTurning = turning - t.normal * t.normal.dot(turning);
-  const double rate = t.normal.dot(shadow.cross(shadowTurning)) / shadow.length2();
-  // The mean spin about the line at mid-part, and the part's turn from it.
-  const btQuaternion half(t.normal, rate * dt / 2);
-  const btVector3 mid = quatRotate(half, spin);
-  const double angle = mid.length() * dt;
-  if (angle <= 0) return false;
-  const btQuaternion turn(mid / mid.length(), angle);
+  // The mean spin as the axis's precession about the normal and the
+  // solid's spin about its own axis (both through the centre), and what
+  // is left of it across them. Precession after spin, each at its mean
+  // rate, is the rolling motion itself: turned about one line, however
+  // chosen, the body tilted by the cube of its turn.
+  const double c = t.normal.dot(t.axis);
+  const double across = spin.dot(t.normal), along = spin.dot(t.axis);
+  const double precession = (across - c * along) / (1 - c * c);
+  const double own = (along - c * across) / (1 - c * c);
+  const btVector3 rest = spin - t.normal * precession - t.axis * own;
+  const btVector3 turnOwn = t.axis * own + rest;
+  const double ownAngle = turnOwn.length() * dt;
+  const btQuaternion first = ownAngle > 0 ? btQuaternion(turnOwn / turnOwn.length(), ownAngle) : btQuaternion::getIdentity();
+  const btQuaternion second(t.normal, precession * dt);
+  const btQuaternion turn = second * first;
   const btVector3 x = start.getOrigin();
-  const btVector3 atCentre = quatRotate(half, linear + spin.cross(t.centre - x));
+  const btVector3 atCentre = linear + spin.cross(t.centre - x);
   pose.setOrigin(t.centre + quatRotate(turn, x - t.centre) + atCentre * dt);
   pose.setRotation((turn * start.getRotation()).normalized());
   return true;

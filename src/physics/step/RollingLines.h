@@ -17,17 +17,17 @@ namespace tabletop {
 /// turns with it, about the support's normal.
 ///
 /// A part's solve holds each contact as the part's start places it, so
-/// the spin it ends with lies along that start's line. Two things then
-/// lag by a part. Turned about that line for the whole part, the body
-/// tilts off its support by the square of its turn (its far end dips, its
-/// apex rises); and at the next part's start its velocity rolls about the
-/// old line, which the solve projects onto the new one, losing the spin
-/// across it: a cone lost 15% of its energy in 3 s at 60 Hz so. Both are
-/// undone here:
+/// the spin it ends with lies along that start's line. Turned about that
+/// line for the whole part, the body tilted off its support by the square
+/// of its turn (its far end dipped, its apex rose); and at the next part's
+/// start its velocity rolled about the old line, which the solve projected
+/// onto the new one, losing the spin across it. Instead:
 /// - before the solve, the velocity a body rolled with about its old line
 ///   is carried round to the new one, as the line turned (transport());
-/// - its part turns it about the line where it will be at mid-part, as
-///   far on as it turned in the part before (turnAt()).
+/// - its part turns it as a rolling solid of revolution moves: its axis
+///   precesses about the support's normal and it spins about its axis,
+///   both through where the axis meets the support, at the rates its
+///   mean spin makes up (turnAt()).
 /// A body that was pushed, or whose points do not lie on one line on one
 /// support, or that did not roll about its line, is left alone.
 class RollingLines {
@@ -37,14 +37,18 @@ class RollingLines {
   /// it, for the next part. Bodies of `aside` keep theirs.
   void record(btDispatcher& dispatcher, double partLength, const BodySet& aside);
   /// After the next part's narrow phase: carries each recorded rolling
-  /// velocity round to the body's new line (not for `kicked` bodies),
-  /// and notes where it turns in this part. Returns the bodies whose
-  /// velocities it set.
+  /// velocity round to the body's new line (not for `kicked` bodies).
+  /// Returns the bodies whose velocities it set.
   const std::vector<btRigidBody*>& transport(btDispatcher& dispatcher, const BodySet& kicked);
+  /// The bodies rolling on a line in this part (transport()'s, and those
+  /// rolling on one now with none recorded), whose gyroscopic term the
+  /// part leaves out.
+  const std::vector<btRigidBody*>& rolling() const { return rolling_; }
   /// Turns `pose` (the body's at the part's start, `start`) as the part's
-  /// mean velocity (`linear`, `spin`) does over `dt` s, about the line the
-  /// body rolls on at mid-part; false (pose untouched) for a body whose
-  /// line does not turn.
+  /// mean velocity (`linear`, `spin`) rolls it over `dt` s: its axis's
+  /// precession after its own spin, both through where its axis meets the
+  /// support; false (pose untouched) for a body whose line does not turn
+  /// (none recorded this part, or a level axis).
   bool turnAt(const btRigidBody& body, const btTransform& start, const btVector3& linear, const btVector3& spin,
               double dt, btTransform& pose) const;
 
@@ -76,7 +80,7 @@ class RollingLines {
   };
   struct Turn {
     const btCollisionObject* body;
-    btVector3 centre;  // what the line turns about: where the axis meets the support
+    btVector3 centre;  // where the axis meets the support
     btVector3 normal;
     btVector3 axis;    // the solid's, world
   };
@@ -86,12 +90,16 @@ class RollingLines {
     btVector3 point, normal;
   };
   static bool lineOf(const Touch* from, const Touch* to, Line& line);
+  // Whether the body's velocity rolls about the line (its ends still,
+  // its spin along it, to kRolls).
+  static bool rollsAbout(const btRigidBody& body, const Line& line);
   std::vector<Touch> touches_;    // scratch
   std::vector<Line> lines_;       // scratch, by body
   std::vector<Rolled> recorded_;  // by body
   std::vector<Rolled> saved_;
   std::vector<Turn> turns_;       // this part's, by body
   std::vector<btRigidBody*> moved_;
+  std::vector<btRigidBody*> rolling_;
 };
 
 }  // namespace tabletop

@@ -236,13 +236,14 @@ void DynamicsWorld::dropStalePoints() {
 
 void DynamicsWorld::carryRolling() {
   const std::vector<btRigidBody*>& moved = rolling_.transport(*getDispatcher(), kicked_);
-  // Their gyroscopic term is left out of this part's solve: the turn it
-  // gives a body rolling on a line is the line's, carried above, and
+  // Bodies rolling on a line leave their gyroscopic term out of this
+  // part's solve: the turn it gives them is their line's, carried above
+  // (from the part after they start rolling) and taken by their step;
   // Bullet's one-sided step of it lost (implicit) or gained (explicit,
   // midpoint) spin at first order.
   constexpr int kGyroscopicFlags = BT_ENABLE_GYROSCOPIC_FORCE_EXPLICIT | BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_WORLD |
                                    BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY;
-  for (btRigidBody* body : moved) {
+  for (btRigidBody* body : rolling_.rolling()) {
     rollingFlags_.emplace_back(body, body->getFlags());
     body->setFlags(body->getFlags() & ~kGyroscopicFlags);
   }

@@ -7,9 +7,11 @@
 //    vertical through its apex, its spin turns with the line, and its
 //    velocity still rolls about it (1e-12 m/s at the line's middle); a
 //    kicked body, or a line that jumped, is left alone;
-//  - turnAt: over a 60 Hz part its apex stays on the plane where it was
-//    (1e-12 m) and its axis keeps its half angle to the plane within
-//    1e-4 rad, where turning about its starting line tilts it 1.1e-3.
+//  - turnAt: over a 60 Hz part, turned as its axis precesses and spins,
+//    its apex stays on the plane where it was (1e-12 m) and its axis keeps
+//    its half angle to the plane (1e-12 rad) and turns about the vertical
+//    by -w tan(a) dt (1e-12 rad), where turning about its starting line
+//    tilts it by 1.1e-3 rad.
 
 #include "physics/step/RollingLines.h"
 
@@ -148,7 +150,7 @@ TEST(RollingLines, AKickedBodyOrALineThatJumpedIsLeftAlone) {
   EXPECT_TRUE(again.transport(jumped.dispatcher, jumped.none).empty());
 }
 
-TEST(RollingLines, APartTurnsItAboutItsLineAtMidPart) {
+TEST(RollingLines, APartTurnsItAsItsAxisPrecessesAndSpins) {
   Scene scene;
   scene.roll(4.0);
   RollingLines lines;
@@ -161,7 +163,8 @@ TEST(RollingLines, APartTurnsItAboutItsLineAtMidPart) {
   const btVector3 apex = pose * btVector3(0, kApexY, 0);
   EXPECT_LT(apex.length(), 1e-12);
   const btVector3 axis = pose.getBasis().getColumn(1);
-  EXPECT_NEAR(std::asin(-axis.y()), kHalf, 1e-4);
+  EXPECT_NEAR(std::asin(-axis.y()), kHalf, 1e-12);
+  EXPECT_NEAR(std::atan2(axis.z(), -axis.x()), -4.0 * std::tan(kHalf) * kDt, 1e-12);
   // Turned about its starting line instead, it tilts by tan(a) (w dt)^2 / 2.
   btTransform fixedLine = start;
   fixedLine.setRotation(btQuaternion(btVector3(1, 0, 0), 4.0 * kDt) * start.getRotation());
