@@ -27,6 +27,13 @@ constexpr double kUpright = 1e-3;
 
 bool byBody(const btCollisionObject* x, const btCollisionObject* y) { return std::less<>()(x, y); }
 
+// Whether a body may be a solid of revolution (roundEnds() says which
+// are): a moving cylinder or hull. Boxes, cubes and balls are not.
+bool mayRoll(const btCollisionObject& o) {
+  const int type = o.getCollisionShape()->getShapeType();
+  return !o.isStaticOrKinematicObject() && (type == CYLINDER_SHAPE_PROXYTYPE || type == CONVEX_HULL_SHAPE_PROXYTYPE);
+}
+
 }  // namespace
 
 // The line of one body's touching points [from, to), if they make one.
@@ -85,8 +92,8 @@ const std::vector<RollingLines::Line>& RollingLines::findLines(btDispatcher& dis
     for (int p = 0; p < manifold->getNumContacts(); ++p) {
       const btManifoldPoint& point = manifold->getContactPoint(p);
       if (point.getDistance() > kLoadTouching) continue;
-      if (!a->isStaticOrKinematicObject()) touches.push_back({a, b, point.getPositionWorldOnA(), point.m_normalWorldOnB});
-      if (!b->isStaticOrKinematicObject()) touches.push_back({b, a, point.getPositionWorldOnB(), -point.m_normalWorldOnB});
+      if (mayRoll(*a)) touches.push_back({a, b, point.getPositionWorldOnA(), point.m_normalWorldOnB});
+      if (mayRoll(*b)) touches.push_back({b, a, point.getPositionWorldOnB(), -point.m_normalWorldOnB});
     }
   }
   std::stable_sort(touches.begin(), touches.end(), [](const Touch& x, const Touch& y) { return byBody(x.body, y.body); });
