@@ -25,6 +25,9 @@ namespace tabletop {
 ///    precessing at -2 and 3 rad/s, keep their centre of mass on its level
 ///    circle about the apex for 3 s (scenes/ConeRoll.h,
 ///    tests/physics/laws/ConeRollTest.cpp);
+///  - strike: a cube and a box struck level with their centre but off it
+///    (J = 0.225 N s) on a frictionless support slide at J / m and turn
+///    at (r x J) / I about the vertical;
 ///  - bounce: a sphere, and every other shape landing flat, dropped 0.3 m
 ///    with e = 0, 0.5 and 0.9, follows free fall and its rebound at e
 ///    times the impact speed (tests/physics/laws/RestitutionTest.cpp).

@@ -63,6 +63,7 @@ Scenario pushScene(const PushCase& c) {
       text << R"("step": )" << c.step;
     } else {
       text << R"("impulse": )" << c.impulse;
+      if (c.at) text << R"(, "at": [)" << c.at->x << ", " << c.at->y << ", " << c.at->z << "]";
     }
     text << "}}";
   }

@@ -41,6 +41,9 @@ struct PushCase {
   double impulse = 0;          ///< N s, or else
   double step = 0;             ///< m, a push by step (neither: no push)
   double spin = 0;             ///< rad/s about the vertical at the start
+  /// Where the push acts, m in the body's frame (level with its centre);
+  /// none: through the centre.
+  std::optional<Vec3> at = std::nullopt;
   /// A cylinder laid on its side, its axis level and across the push (it
   /// rolls) or along it (it slides); else upright.
   enum class Lying { Upright, Across, Along } lying = Lying::Upright;
