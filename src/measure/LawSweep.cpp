@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <tuple>
 
@@ -11,6 +12,7 @@
 #include "core/Simulation.h"
 #include "io/ProcessPool.h"
 #include "physics/StepPush.h"
+#include "scenario/ScenarioLoader.h"
 #include "scenes/ConeRoll.h"
 #include "sim/SceneBuilder.h"
 #include "sim/ScriptRunner.h"
@@ -46,6 +48,10 @@ const Roller kRollers[] = {{{"cylinder", "[0.05, 0, 0.1]", 0, 0}, 0.05, 0, 0.1},
                            {{"cylinder", "[0.03, 0, 0.12]", 0, 0}, 0.03, 0, 0.12},
                            {{"cylinder", "[0.05, 0.03, 0.1]", 0, 0}, 0.05, 0.03, 0.1}};
 const double kPrecessions[] = {-2.0, 3.0};  // rad/s
+// The box of free rotation's law, spun at kFreeSpin for kFreeDuration.
+const ShapeSize kTumbler = {"box", "[0.1, 0.2, 0.3]", 0, 0.1};
+constexpr double kFreeSpin = 5.0;       // rad/s
+constexpr double kFreeDuration = 10.0;  // s
 const double kRestitutions[] = {0.0, 0.5, 0.9};
 const double kAngles[] = {0.0, 45.0, 77.0, 200.0};
 
@@ -185,6 +191,42 @@ LawPoint measureStrike(const ShapeSize& shape, const char* support, double rate)
   return point;
 }
 
+// A box spun about each of its principal axes in free flight (no
+// gravity) for 10 s against the closed form, a steady turn at its spin:
+// the worst distance of a corner from its closed-form place.
+LawPoint measureFree(double rate) {
+  LawPoint point{"free", std::string(kTumbler.shape) + " " + kTumbler.size, "none", rate, 0.0, 0.0};
+  for (int axis = 0; axis < 3; ++axis) {
+    std::ostringstream text;
+    text.precision(17);
+    const double w[3] = {axis == 0 ? kFreeSpin : 0.0, axis == 1 ? kFreeSpin : 0.0, axis == 2 ? kFreeSpin : 0.0};
+    text << R"({"version": 1, "name": "free", "settings": {"gravity": 0, "duration": )" << kFreeDuration
+         << R"(, "end_at_rest": false, "timestep": )" << 1.0 / rate << R"(}, "entities": [{"name": "A", "shape": ")"
+         << kTumbler.shape << R"(", "size": )" << kTumbler.size << R"(, "position": [0, 2, 0], "mass": 1, "spin": [)"
+         << w[0] << ", " << w[1] << ", " << w[2] << "]}]}";
+    Scenario s = ScenarioLoader::loadText(text.str(), "free.json");
+    s.settings.timestep = 1.0 / rate;
+    auto sim = buildSimulation(s, s.settings, SimulationMode::Bullet);
+    const RunResult r = runScript(s, s.settings, *sim);
+    const EntityState& a = r.entities.back();
+    // The closed form: turned by w t about the axis, centre where it was.
+    const Quat q = Quat::about({w[0] / kFreeSpin, w[1] / kFreeSpin, w[2] / kFreeSpin}, kFreeSpin * r.simTime);
+    const Vec3 half = s.entities.back().geometry.halfExtents();
+    const Quat turned{a.orientation[0], a.orientation[1], a.orientation[2], a.orientation[3]};
+    double worst = std::hypot(std::hypot(a.position.x, a.position.y - 2), a.position.z);
+    for (const double sx : {-1.0, 1.0}) {
+      for (const double sy : {-1.0, 1.0}) {
+        for (const double sz : {-1.0, 1.0}) {
+          const Vec3 corner{sx * half.x, sy * half.y, sz * half.z};
+          worst = std::max(worst, (turned.rotate(corner) - q.rotate(corner)).length());
+        }
+      }
+    }
+    point.worstError = std::max(point.worstError, r.complete ? worst : INFINITY);
+  }
+  return point;
+}
+
 // A drop from kDropHeight against dropHeight(), followed until dropEnd():
 // the worst error of the centre's height.
 LawPoint measureBounce(const ShapeSize& shape, const char* support, double rate) {
@@ -234,6 +276,9 @@ std::vector<LawPoint> measureLaws(const std::vector<double>& rates, const Measur
       for (const double rate : rates) runs.push_back({&law, shape, support, rate});
     }
   }
+  // Free rotation has no support: one row, in free flight.
+  const std::string free = "free";
+  for (const double rate : rates) runs.push_back({&free, &kTumbler, "none", rate});
   hooks.start(static_cast<long>(runs.size()));
   const auto measureRun = [&runs](std::size_t i) {
     const Run& r = runs[i];
@@ -241,6 +286,7 @@ std::vector<LawPoint> measureLaws(const std::vector<double>& rates, const Measur
            : *r.law == "spin" ? measureSpin(*r.shape, r.support, r.rate)
            : *r.law == "circle" ? measureCircle(*r.shape, r.support, r.rate)
            : *r.law == "strike" ? measureStrike(*r.shape, r.support, r.rate)
+           : *r.law == "free" ? measureFree(r.rate)
                               : measure(*r.law, *r.shape, r.support, r.rate);
   };
   std::vector<LawPoint> points;
@@ -304,7 +350,8 @@ ResultTable lawTable(const std::vector<LawPoint>& points) {
       row.push_back(cell(nlohmann::json((*found)->worstError), ResultTable::Cell(cell((*found)->worstError * 1000.0, 4)).shown));
       turn = std::max(turn, (*found)->worstTurn);
     }
-    const bool noTurn = shape.rfind("sphere", 0) == 0 || law == "spin" || law == "circle" || law == "strike";
+    const bool noTurn =
+        shape.rfind("sphere", 0) == 0 || law == "spin" || law == "circle" || law == "strike" || law == "free";
     row.push_back(noTurn ? cell(nullptr, "-") : cell(turn, 3));
     t.rows.push_back(std::move(row));
   }

@@ -28,6 +28,8 @@ namespace tabletop {
 ///  - strike: a cube and a box struck level with their centre but off it
 ///    (J = 0.225 N s) on a frictionless support slide at J / m and turn
 ///    at (r x J) / I about the vertical;
+///  - free: a box spun about each principal axis in free flight keeps
+///    turning steadily about it (one row, support "none");
 ///  - bounce: a sphere, and every other shape landing flat, dropped 0.3 m
 ///    with e = 0, 0.5 and 0.9, follows free fall and its rebound at e
 ///    times the impact speed (tests/physics/laws/RestitutionTest.cpp).
