@@ -56,7 +56,7 @@ void DynamicsWorld::integrateMotions(const Part& part) {
   const btScalar timeStep = part.length;
   const bool smooth = secondOrder_ && smoothAcceleration_ > 0;
   if (smooth) {
-    rolling_.record(*getDispatcher(), timeStep, aside_);
+    rolling_.record(*getDispatcher(), aside_);
     keptOut_.collect(*getDispatcher(), m_nonStaticRigidBodies, timeStep);
     startPoses_.resize(static_cast<std::size_t>(m_nonStaticRigidBodies.size()));
     for (int i = 0; i < m_nonStaticRigidBodies.size(); ++i) {

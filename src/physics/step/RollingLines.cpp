@@ -120,10 +120,10 @@ bool RollingLines::rollsAbout(const btRigidBody& body, const Line& line) {
          (linear + spin.cross(line.b - line.centre)).length() <= slip;
 }
 
-void RollingLines::record(btDispatcher& dispatcher, double partLength, const BodySet& aside) {
-  std::vector<Rolled> kept;
-  for (const Rolled& r : recorded_) {
-    if (aside.contains(r.line.body)) kept.push_back(r);
+void RollingLines::record(btDispatcher& dispatcher, const BodySet& aside) {
+  std::vector<Line> kept;
+  for (const Line& r : recorded_) {
+    if (aside.contains(r.body)) kept.push_back(r);
   }
   recorded_.clear();
   turns_.clear();
@@ -131,7 +131,7 @@ void RollingLines::record(btDispatcher& dispatcher, double partLength, const Bod
     const auto& body = *static_cast<const btRigidBody*>(line.body);
     if (aside.contains(line.body) || !rollsAbout(body, line)) continue;
     const double length = line.a.distance(line.b);
-    recorded_.push_back({line, body.getLinearVelocity(), body.getAngularVelocity(), partLength});
+    recorded_.push_back(line);
     // It turns about where its axis meets the support (none for a level axis).
     const btVector3 axis = body.getWorldTransform().getBasis().getColumn(1);
     if (std::abs(axis.dot(line.normal)) < kLevelAxis) continue;
@@ -143,7 +143,7 @@ void RollingLines::record(btDispatcher& dispatcher, double partLength, const Bod
   if (kept.empty()) return;
   recorded_.insert(recorded_.end(), kept.begin(), kept.end());
   std::stable_sort(recorded_.begin(), recorded_.end(),
-                   [](const Rolled& x, const Rolled& y) { return byBody(x.line.body, y.line.body); });
+                   [](const Line& x, const Line& y) { return byBody(x.body, y.body); });
 }
 
 const std::vector<btRigidBody*>& RollingLines::transport(btDispatcher& dispatcher, const BodySet& kicked) {
@@ -153,32 +153,33 @@ const std::vector<btRigidBody*>& RollingLines::transport(btDispatcher& dispatche
     if (kicked.contains(now.body)) continue;
     auto* body = static_cast<btRigidBody*>(const_cast<btCollisionObject*>(now.body));
     const auto found = std::lower_bound(recorded_.begin(), recorded_.end(), now.body,
-                                        [](const Rolled& r, const btCollisionObject* key) { return byBody(r.line.body, key); });
-    if (found == recorded_.end() || found->line.body != now.body) {
+                                        [](const Line& r, const btCollisionObject* key) { return byBody(r.body, key); });
+    if (found == recorded_.end() || found->body != now.body) {
       // Not rolling on a line before (a scene's start): rolling on it now.
       if (rollsAbout(*body, now)) rolling_.push_back(body);
       continue;
     }
-    const Rolled& was = *found;
+    const Line& was = *found;
     const btVector3& n = now.normal;
-    if (was.line.support != now.support || was.line.normal.dot(n) < 1 - kSameNormal || was.length <= 0) continue;
-    const btVector3 d0 = flat(was.line.b - was.line.a, n);
+    if (was.support != now.support || was.normal.dot(n) < 1 - kSameNormal) continue;
+    const btVector3 d0 = flat(was.b - was.a, n);
     btVector3 d1 = flat(now.b - now.a, n);
     if (d0.fuzzyZero() || d1.fuzzyZero()) continue;
     if (d0.dot(d1) < 0) d1 = -d1;
     const double turn = std::atan2(n.dot(d0.cross(d1)), d0.dot(d1));
     if (std::abs(turn) < 1e-9 || std::abs(turn) > kMostTurn) continue;
-    // Where the old line meets the new, in the support's plane.
-    const btVector3 gap = now.a - was.line.a;
+    // The old line and the new meet in the support's plane where the line
+    // turned about: far off, it moved along rather than turned.
+    const btVector3 gap = now.a - was.a;
     const double s = n.dot((gap - n * gap.dot(n)).cross(d1)) / n.dot(d0.cross(d1));
-    const btVector3 centre = was.line.a + d0 * s;
+    const btVector3 centre = was.a + d0 * s;
     if (centre.distance(now.a) > kFarthest * now.a.distance(now.b)) continue;
     // The velocity it rolled with, turned as the line turned: its spin,
     // and at the line's middle the old middle's velocity (none, rolling).
     const btQuaternion q(n, turn);
     const btVector3 spin = body->getAngularVelocity();
-    const btVector3 oldMiddle = (was.line.a + was.line.b) / 2, middle = (now.a + now.b) / 2;
-    const btVector3 atMiddle = quatRotate(q, body->getLinearVelocity() + spin.cross(oldMiddle - was.line.centre));
+    const btVector3 oldMiddle = (was.a + was.b) / 2, middle = (now.a + now.b) / 2;
+    const btVector3 atMiddle = quatRotate(q, body->getLinearVelocity() + spin.cross(oldMiddle - was.centre));
     const btVector3 turned = quatRotate(q, spin);
     body->setAngularVelocity(turned);
     body->setLinearVelocity(atMiddle + turned.cross(body->getCenterOfMassPosition() - middle));
@@ -217,14 +218,14 @@ bool RollingLines::turnAt(const btRigidBody& body, const btTransform& start, con
 }
 
 void RollingLines::putBack(const BodySet& only) {
-  std::vector<Rolled> kept;
-  for (const Rolled& r : recorded_) {
-    if (!only.contains(r.line.body)) kept.push_back(r);
+  std::vector<Line> kept;
+  for (const Line& r : recorded_) {
+    if (!only.contains(r.body)) kept.push_back(r);
   }
-  for (const Rolled& r : saved_) {
-    if (only.contains(r.line.body)) kept.push_back(r);
+  for (const Line& r : saved_) {
+    if (only.contains(r.body)) kept.push_back(r);
   }
-  std::stable_sort(kept.begin(), kept.end(), [](const Rolled& x, const Rolled& y) { return byBody(x.line.body, y.line.body); });
+  std::stable_sort(kept.begin(), kept.end(), [](const Line& x, const Line& y) { return byBody(x.body, y.body); });
   recorded_ = std::move(kept);
 }
 

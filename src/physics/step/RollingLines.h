@@ -35,7 +35,7 @@ class RollingLines {
   /// After the part's solve, before its integration: each moving body's
   /// line (the part's start) and whether its solved velocity rolls about
   /// it, for the next part. Bodies of `aside` keep theirs.
-  void record(btDispatcher& dispatcher, double partLength, const BodySet& aside);
+  void record(btDispatcher& dispatcher, const BodySet& aside);
   /// After the next part's narrow phase: carries each recorded rolling
   /// velocity round to the body's new line (not for `kicked` bodies).
   /// Returns the bodies whose velocities it set.
@@ -73,11 +73,6 @@ class RollingLines {
   const std::vector<Line>& findLines(btDispatcher& dispatcher);
 
  private:
-  struct Rolled {
-    Line line;
-    btVector3 linear, spin;  // the velocity it rolled with
-    double length = 0;       // s, the part's
-  };
   struct Turn {
     const btCollisionObject* body;
     btVector3 centre;  // where the axis meets the support
@@ -95,8 +90,8 @@ class RollingLines {
   static bool rollsAbout(const btRigidBody& body, const Line& line);
   std::vector<Touch> touches_;    // scratch
   std::vector<Line> lines_;       // scratch, by body
-  std::vector<Rolled> recorded_;  // by body
-  std::vector<Rolled> saved_;
+  std::vector<Line> recorded_;  // the lines bodies rolled about, by body
+  std::vector<Line> saved_;
   std::vector<Turn> turns_;       // this part's, by body
   std::vector<btRigidBody*> moved_;
   std::vector<btRigidBody*> rolling_;

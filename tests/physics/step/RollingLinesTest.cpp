@@ -116,7 +116,7 @@ TEST(RollingLines, ARolledVelocityTurnsWithItsLine) {
   Scene scene;
   scene.roll(4.0);
   RollingLines lines;
-  lines.record(scene.dispatcher, kDt, scene.none);
+  lines.record(scene.dispatcher, scene.none);
   const btVector3 spin = scene.body->getAngularVelocity();
   const btVector3 linear = scene.body->getLinearVelocity();
   const double yaw = 0.03;
@@ -136,7 +136,7 @@ TEST(RollingLines, AKickedBodyOrALineThatJumpedIsLeftAlone) {
   Scene kicked;
   kicked.roll(4.0);
   RollingLines lines;
-  lines.record(kicked.dispatcher, kDt, kicked.none);
+  lines.record(kicked.dispatcher, kicked.none);
   kicked.place(0.03);
   BodySet pushed;
   pushed.insert(kicked.body.get());
@@ -145,7 +145,7 @@ TEST(RollingLines, AKickedBodyOrALineThatJumpedIsLeftAlone) {
   Scene jumped;
   jumped.roll(4.0);
   RollingLines again;
-  again.record(jumped.dispatcher, kDt, jumped.none);
+  again.record(jumped.dispatcher, jumped.none);
   jumped.place(0.6);
   EXPECT_TRUE(again.transport(jumped.dispatcher, jumped.none).empty());
 }
@@ -154,7 +154,7 @@ TEST(RollingLines, APartTurnsItAsItsAxisPrecessesAndSpins) {
   Scene scene;
   scene.roll(4.0);
   RollingLines lines;
-  lines.record(scene.dispatcher, kDt, scene.none);
+  lines.record(scene.dispatcher, scene.none);
   ASSERT_TRUE(lines.turning());
   const btTransform start = scene.body->getWorldTransform();
   btTransform pose = start;
