@@ -8,6 +8,7 @@
 #include "physics/contact/ContactMaterial.h"
 #include "physics/collision/Reach.h"
 #include "physics/StepPush.h"
+#include "physics/step/FreeFlight.h"
 
 namespace tabletop {
 namespace {
@@ -28,15 +29,11 @@ constexpr double kSubstepTravel = 0.5;
 // that rocks or tumbles there is cut into parts as before.
 constexpr double kSlideTurn = 0.05;
 
-
 btQuaternion yawRotation(double degrees) {
   return btQuaternion(btVector3(0, 1, 0), convertAngle(degrees));
 }
 
-// Bullet's rigid-body flags for the gyroscopic term (Settings::gyroscopic).
-constexpr int kGyroscopicFlags = BT_ENABLE_GYROSCOPIC_FORCE_EXPLICIT | BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_WORLD |
-                                 BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY;
-
+// Bullet's rigid-body flag for the gyroscopic term (Settings::gyroscopic).
 int gyroscopicFlag(Gyroscopic g) {
   switch (g) {
     case Gyroscopic::None: return 0;

@@ -1,12 +1,6 @@
 #include "physics/step/FreeFlight.h"
 
 namespace tabletop {
-namespace {
-
-constexpr int kGyroscopicFlags =
-    BT_ENABLE_GYROSCOPIC_FORCE_EXPLICIT | BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_WORLD | BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY;
-
-}  // namespace
 
 void FreeFlight::find(const btAlignedObjectArray<btRigidBody*>& bodies, btDispatcher& dispatcher) {
   free_.clear();

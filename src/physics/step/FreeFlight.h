@@ -9,6 +9,11 @@
 
 namespace tabletop {
 
+/// Every one of Bullet's gyroscopic flags on a rigid body (Settings::gyroscopic
+/// picks one; a part that turns a body itself clears them for its solve).
+inline constexpr int kGyroscopicFlags =
+    BT_ENABLE_GYROSCOPIC_FORCE_EXPLICIT | BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_WORLD | BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY;
+
 /// The bodies that touch nothing in a part (no contact point of any
 /// manifold, so no row of the solver acts on them) and bear no applied
 /// torque turn as a free rigid body does: their spin and orientation follow Euler's equations' exact

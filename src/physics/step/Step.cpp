@@ -241,8 +241,6 @@ void DynamicsWorld::carryRolling() {
   // (from the part after they start rolling) and taken by their step;
   // Bullet's one-sided step of it lost (implicit) or gained (explicit,
   // midpoint) spin at first order.
-  constexpr int kGyroscopicFlags = BT_ENABLE_GYROSCOPIC_FORCE_EXPLICIT | BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_WORLD |
-                                   BT_ENABLE_GYROSCOPIC_FORCE_IMPLICIT_BODY;
   for (btRigidBody* body : rolling_.rolling()) {
     rollingFlags_.emplace_back(body, body->getFlags());
     body->setFlags(body->getFlags() & ~kGyroscopicFlags);
